@@ -1,0 +1,38 @@
+/* bench.h - what the neat_bench tasks share: their configuration and the result of one run. */
+#ifndef BENCH_H
+#define BENCH_H
+
+#include <stdint.h>
+
+#include "neat.h"
+
+typedef struct bench_cfg {
+    neat_params neat;           /* [neat] section */
+    uint32_t runs;              /* [bench] runs */
+    uint64_t seed;              /* [bench] seed: run r uses neat_seed_derive(seed, r) */
+    uint32_t max_generations;   /* a run that has not solved by then fails */
+    uint32_t max_evaluations;   /* ... or has evaluated this many genomes (0: no limit) */
+    uint32_t threads;           /* runs in parallel (0: every core) */
+    /* pole tasks */
+    uint32_t balance_steps;     /* 100000: a Markov solution / the non-Markov long test */
+    uint32_t damping_steps;     /* 1000: non-Markov fitness window */
+    uint32_t generalization_min;/* 200 of the 625 starts */
+} bench_cfg;
+
+typedef struct bench_result {
+    int solved;
+    uint64_t evaluations;   /* genomes evaluated up to and including the solution */
+    uint32_t generations;
+    uint32_t hidden_nodes;  /* of the solution */
+    uint32_t connections;   /* enabled, of the solution */
+    uint32_t generalization;/* pole-nv: starts the solution balanced */
+    int error;              /* a libneat or runtime error stopped the run */
+} bench_result;
+
+/* One evolutionary run each; return 0 or an error code. */
+int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res);
+int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result *res);
+/* the activation micro-benchmark: prints its figures, returns 0 */
+int bench_activation(uint64_t seed, double min_seconds);
+
+#endif /* BENCH_H */

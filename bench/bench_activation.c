@@ -1,0 +1,185 @@
+/* bench_activation.c - ns per connection per step of the fixed-point runtime vs a plain double-precision network. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "bench.h"
+#include "neat_phenotype.h"
+
+#define ACT_INPUTS 12 /* the duel's sensors (plus the bias) */
+#define ACT_OUTPUTS 3
+
+static double act_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* A recurrent genome with exactly n_conns connections between random node
+ * pairs (self and backward connections included). */
+static int act_genome(neat_genome *g, uint32_t n_hidden, uint32_t n_conns, neat_rng *rng)
+{
+    uint32_t i, innov = 0, nodes = ACT_INPUTS + 1 + ACT_OUTPUTS + n_hidden;
+    int err = 0;
+    neat_genome_init(g);
+    for (i = 0; i < nodes && !err; i++)
+        err = neat_genome_add_node(g, i, i == 0 ? NEAT_NODE_BIAS : i <= ACT_INPUTS ? NEAT_NODE_INPUT
+                                             : i <= ACT_INPUTS + ACT_OUTPUTS ? NEAT_NODE_OUTPUT : NEAT_NODE_HIDDEN, NULL);
+    while (!err && g->n_conns < n_conns) {
+        uint32_t s = neat_rng_below(rng, nodes);
+        uint32_t d = ACT_INPUTS + 1 + neat_rng_below(rng, nodes - ACT_INPUTS - 1);
+        uint32_t k, dup = 0;
+        for (k = 0; k < g->n_conns; k++)
+            dup |= g->conns[k].in == s && g->conns[k].out == d;
+        if (!dup)
+            err = neat_genome_add_conn(g, s, d, (2.0 * neat_rng_uniform(rng) - 1.0) * 2.0, innov++, 1, NULL);
+    }
+    return err;
+}
+
+/* The straightforward double-precision network the ratio is measured against. */
+typedef struct act_ref {
+    uint32_t n_nodes, n_conns;
+    uint32_t *src, *dst;
+    double *w, *act, *sum;
+} act_ref;
+
+static void act_ref_build(act_ref *r, const neat_genome *g)
+{
+    uint32_t k;
+    r->n_nodes = g->n_nodes;
+    r->n_conns = g->n_conns;
+    r->src = (uint32_t *)malloc(g->n_conns * sizeof(uint32_t));
+    r->dst = (uint32_t *)malloc(g->n_conns * sizeof(uint32_t));
+    r->w = (double *)malloc(g->n_conns * sizeof(double));
+    r->act = (double *)calloc(g->n_nodes, sizeof(double));
+    r->sum = (double *)calloc(g->n_nodes, sizeof(double));
+    for (k = 0; k < g->n_conns; k++) {
+        r->src[k] = g->conns[k].in; /* ids are indices here */
+        r->dst[k] = g->conns[k].out;
+        r->w[k] = g->conns[k].weight;
+    }
+}
+
+static void act_ref_step(act_ref *r, const double *in)
+{
+    uint32_t k, j;
+    for (j = 0; j <= ACT_INPUTS; j++)
+        r->act[j] = in[j];
+    for (j = ACT_INPUTS + 1; j < r->n_nodes; j++)
+        r->sum[j] = 0.0;
+    for (k = 0; k < r->n_conns; k++)
+        r->sum[r->dst[k]] += r->w[k] * r->act[r->src[k]];
+    for (j = ACT_INPUTS + 1; j < r->n_nodes; j++)
+        r->act[j] = 1.0 / (1.0 + exp(-4.9 * r->sum[j]));
+}
+
+static void act_ref_free(act_ref *r)
+{
+    free(r->src);
+    free(r->dst);
+    free(r->w);
+    free(r->act);
+    free(r->sum);
+}
+
+static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double min_seconds, double *ns_fixed,
+                   double *ns_double, double *max_diff)
+{
+    neat_genome g;
+    neat_params p = neat_params_default();
+    neat_phenotype ph;
+    act_ref ref;
+    nrt_q15 in[ACT_INPUTS + 1], out[ACT_OUTPUTS];
+    double din[ACT_INPUTS + 1], t0, t, sink = 0.0;
+    uint64_t steps, s;
+    uint32_t j;
+    int err;
+
+    p.n_inputs = ACT_INPUTS;
+    p.n_outputs = ACT_OUTPUTS;
+    err = act_genome(&g, n_hidden, n_conns, rng);
+    neat_phenotype_init(&ph);
+    if (!err)
+        err = neat_phenotype_load(&ph, &g, &p);
+    if (err) {
+        neat_genome_free(&g, NULL);
+        return err;
+    }
+    act_ref_build(&ref, &g);
+    for (j = 0; j <= ACT_INPUTS; j++) {
+        din[j] = j == 0 ? 1.0 : neat_from_q15(neat_q15(neat_rng_uniform(rng)));
+        in[j] = j == 0 ? NRT_ONE : neat_q15(din[j]);
+    }
+    din[0] = neat_from_q15(NRT_ONE);
+    /* accuracy: the same 1000 steps in both */
+    *max_diff = 0.0;
+    nrt_reset(&ph.net);
+    for (s = 0; s < 1000; s++) {
+        nrt_step(&ph.net, in, out);
+        act_ref_step(&ref, din);
+        for (j = 0; j < ACT_OUTPUTS; j++) {
+            double d = fabs(neat_from_q15(out[j]) - ref.act[ACT_INPUTS + 1 + j]);
+            if (d > *max_diff)
+                *max_diff = d;
+        }
+    }
+    /* speed: repeat until min_seconds have passed, 10000 steps at a time */
+    steps = 0;
+    t0 = act_now();
+    do {
+        for (s = 0; s < 10000; s++) {
+            in[1] = (nrt_q15)(in[1] ^ (nrt_q15)(s & 1));
+            nrt_step(&ph.net, in, out);
+        }
+        steps += 10000;
+        t = act_now() - t0;
+    } while (t < min_seconds);
+    sink += out[0];
+    *ns_fixed = t * 1e9 / ((double)steps * n_conns);
+    steps = 0;
+    t0 = act_now();
+    do {
+        for (s = 0; s < 10000; s++) {
+            din[1] += (s & 1) ? 1e-9 : -1e-9;
+            act_ref_step(&ref, din);
+        }
+        steps += 10000;
+        t = act_now() - t0;
+    } while (t < min_seconds);
+    sink += ref.act[ACT_INPUTS + 1];
+    *ns_double = t * 1e9 / ((double)steps * n_conns);
+    if (sink == 12345.6789)
+        printf("#\n"); /* keeps the loops' results alive */
+    act_ref_free(&ref);
+    neat_phenotype_free(&ph);
+    neat_genome_free(&g, NULL);
+    return 0;
+}
+
+int bench_activation(uint64_t seed, double min_seconds)
+{
+    neat_rng rng;
+    double f40, d40, e40, f200, d200, e200;
+    int err;
+    neat_rng_seed(&rng, seed);
+    err = act_one(2, 40, &rng, min_seconds, &f40, &d40, &e40);
+    if (!err)
+        err = act_one(20, 200, &rng, min_seconds, &f200, &d200, &e200);
+    if (err) {
+        fprintf(stderr, "neat_bench: activation: cannot build the test networks (%s)\n", neat_strerror(err));
+        return 1;
+    }
+    printf("40 connections:  fixed point %.3f ns/conn/step, double %.3f ns/conn/step (ratio %.2f), max output diff %.2e\n",
+           f40, d40, d40 / f40, e40);
+    printf("200 connections: fixed point %.3f ns/conn/step, double %.3f ns/conn/step (ratio %.2f), max output diff %.2e\n",
+           f200, d200, d200 / f200, e200);
+    printf("{\"task\":\"activation\",\"ns_per_conn_step_40\":%.4f,\"ns_per_conn_step_200\":%.4f,"
+           "\"double_ns_per_conn_step_40\":%.4f,\"double_ns_per_conn_step_200\":%.4f,"
+           "\"max_output_diff_40\":%.3e,\"max_output_diff_200\":%.3e,\"seconds_per_measure\":%.2f}\n",
+           f40, f200, d40, d200, e40, e200, min_seconds);
+    return 0;
+}

@@ -1,0 +1,312 @@
+/* neat_bench.c - the NEAT paper's benchmarks (XOR, double pole with and without velocities) and the activation speed. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <ini.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "bench.h"
+#include "neat_config.h"
+#include "nrt.h"
+
+#ifndef NEAT_BENCH_DIR
+#define NEAT_BENCH_DIR "bench"
+#endif
+
+#define BENCH_KEY(name, type, lo, hi) {#name, type, offsetof(bench_cfg, name), lo, hi}
+static const neat_cfg_key bench_keys[] = {
+    BENCH_KEY(runs, NEAT_CFG_U32, 1, 100000),
+    BENCH_KEY(max_generations, NEAT_CFG_U32, 1, 100000000),
+    BENCH_KEY(max_evaluations, NEAT_CFG_U32, 0, 4000000000.0),
+    BENCH_KEY(threads, NEAT_CFG_U32, 0, 1024),
+    BENCH_KEY(balance_steps, NEAT_CFG_U32, 1, 100000000),
+    BENCH_KEY(damping_steps, NEAT_CFG_U32, 101, 100000000),
+    BENCH_KEY(generalization_min, NEAT_CFG_U32, 0, 625),
+};
+#define BENCH_N_KEYS (sizeof bench_keys / sizeof bench_keys[0])
+
+typedef struct bench_load {
+    bench_cfg *cfg;
+    const char *path;
+    char err[512];
+} bench_load;
+
+/* Debian's inih passes no line number: returning 0 makes ini_parse return
+ * the line of the first error, and the message waits here until then. */
+static int bench_ini_handler(void *user, const char *section, const char *name, const char *value)
+{
+    bench_load *L = (bench_load *)user;
+    char msg[400];
+    int bad;
+    if (strcmp(section, "neat") == 0)
+        bad = neat_config_set(&L->cfg->neat, name, value, msg, sizeof msg);
+    else if (strcmp(section, "bench") == 0)
+        bad = neat_config_set_in(bench_keys, BENCH_N_KEYS, L->cfg, name, value, msg, sizeof msg);
+    else {
+        snprintf(msg, sizeof msg, "unknown section [%s] (expected [bench] or [neat])", section);
+        bad = 1;
+    }
+    if (bad) {
+        snprintf(L->err, sizeof L->err, "%s", msg);
+        return 0;
+    }
+    return 1;
+}
+
+static int bench_load_config(bench_cfg *cfg, const char *path)
+{
+    bench_load L;
+    const char *field;
+    int r;
+    memset(&L, 0, sizeof L);
+    L.cfg = cfg;
+    L.path = path;
+    r = ini_parse(path, bench_ini_handler, &L);
+    if (r == -1) {
+        fprintf(stderr, "neat_bench: %s: cannot open: %s\n", path, strerror(errno));
+        return -1;
+    }
+    if (r != 0) {
+        if (L.err[0])
+            fprintf(stderr, "neat_bench: %s:%d: %s\n", path, r, L.err);
+        else
+            fprintf(stderr, "neat_bench: %s:%d: syntax error\n", path, r);
+        return -1;
+    }
+    if (neat_params_check(&cfg->neat, &field) != NEAT_OK) {
+        fprintf(stderr, "neat_bench: %s: parameter %s out of range\n", path, field);
+        return -1;
+    }
+    return 0;
+}
+
+/* ---- runs in parallel: each run's seed comes from its index, so results do not depend on threads ---- */
+typedef struct bench_job {
+    const bench_cfg *cfg;
+    const char *task;
+    bench_result *res;
+    uint32_t next;
+    int quiet;
+    pthread_mutex_t lock;
+} bench_job;
+
+static void *bench_worker(void *arg)
+{
+    bench_job *job = (bench_job *)arg;
+    for (;;) {
+        uint32_t r;
+        uint64_t key, seed;
+        bench_result *res;
+        pthread_mutex_lock(&job->lock);
+        r = job->next++;
+        pthread_mutex_unlock(&job->lock);
+        if (r >= job->cfg->runs)
+            return NULL;
+        key = r;
+        seed = neat_seed_derive(job->cfg->seed, &key, 1);
+        res = &job->res[r];
+        memset(res, 0, sizeof *res);
+        if (strcmp(job->task, "xor") == 0)
+            task_xor_run(job->cfg, seed, res);
+        else
+            task_pole_run(job->cfg, seed, strcmp(job->task, "pole") == 0, res);
+        if (!job->quiet) {
+            pthread_mutex_lock(&job->lock);
+            if (res->error)
+                fprintf(stderr, "run %u: error: %s\n", r, res->error < -90 ? nrt_strerror(res->error + 100)
+                                                                           : neat_strerror(res->error));
+            else if (res->solved)
+                fprintf(stderr, "run %u: solved after %llu evaluations (generation %u), %u hidden nodes, %u connections\n",
+                        r, (unsigned long long)res->evaluations, res->generations, res->hidden_nodes, res->connections);
+            else
+                fprintf(stderr, "run %u: FAILED after %llu evaluations (%u generations)\n", r,
+                        (unsigned long long)res->evaluations, res->generations);
+            pthread_mutex_unlock(&job->lock);
+        }
+    }
+}
+
+static int bench_cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double bench_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int bench_evolve(const char *task, bench_cfg *cfg, int quiet)
+{
+    bench_job job;
+    pthread_t *th;
+    uint32_t t, r, solved = 0, errors = 0, n_threads = cfg->threads;
+    uint64_t *ev;
+    double t0 = bench_now(), secs, sum_ev = 0, sum_hid = 0, sum_conn = 0, sum_gen = 0, median = 0;
+
+    if (n_threads == 0) {
+        long n = sysconf(_SC_NPROCESSORS_ONLN);
+        n_threads = n > 0 ? (uint32_t)n : 1;
+    }
+    if (n_threads > cfg->runs)
+        n_threads = cfg->runs;
+    memset(&job, 0, sizeof job);
+    job.cfg = cfg;
+    job.task = task;
+    job.quiet = quiet;
+    job.res = (bench_result *)calloc(cfg->runs, sizeof(bench_result));
+    th = (pthread_t *)calloc(n_threads, sizeof(pthread_t));
+    ev = (uint64_t *)calloc(cfg->runs, sizeof(uint64_t));
+    if (job.res == NULL || th == NULL || ev == NULL) {
+        fprintf(stderr, "neat_bench: out of memory\n");
+        return 1;
+    }
+    pthread_mutex_init(&job.lock, NULL);
+    for (t = 0; t < n_threads; t++)
+        pthread_create(&th[t], NULL, bench_worker, &job);
+    for (t = 0; t < n_threads; t++)
+        pthread_join(th[t], NULL);
+    pthread_mutex_destroy(&job.lock);
+    secs = bench_now() - t0;
+
+    for (r = 0; r < cfg->runs; r++) {
+        bench_result *x = &job.res[r];
+        errors += x->error != 0;
+        if (!x->solved)
+            continue;
+        ev[solved++] = x->evaluations;
+        sum_ev += (double)x->evaluations;
+        sum_hid += x->hidden_nodes;
+        sum_conn += x->connections;
+        sum_gen += x->generations;
+    }
+    if (solved) {
+        qsort(ev, solved, sizeof ev[0], bench_cmp_u64);
+        median = solved % 2 ? (double)ev[solved / 2] : 0.5 * (double)(ev[solved / 2 - 1] + ev[solved / 2]);
+    }
+    printf("task %s: %u runs, %u failures (%u errors), seed %llu, %u threads, %.1f s\n", task, cfg->runs,
+           cfg->runs - solved, errors, (unsigned long long)cfg->seed, n_threads, secs);
+    if (solved)
+        printf("solved runs: mean %.1f evaluations, median %.1f, mean %.2f hidden nodes, %.2f connections, %.1f generations\n",
+               sum_ev / solved, median, sum_hid / solved, sum_conn / solved, sum_gen / solved);
+    printf("{\"task\":\"%s\",\"runs\":%u,\"failures\":%u,\"errors\":%u,\"mean_evaluations\":%.1f,"
+           "\"median_evaluations\":%.1f,\"mean_hidden_nodes\":%.3f,\"mean_connections\":%.3f,"
+           "\"mean_generations\":%.2f,\"seed\":%llu,\"threads\":%u,\"seconds\":%.2f}\n",
+           task, cfg->runs, cfg->runs - solved, errors, solved ? sum_ev / solved : 0.0, median,
+           solved ? sum_hid / solved : 0.0, solved ? sum_conn / solved : 0.0, solved ? sum_gen / solved : 0.0,
+           (unsigned long long)cfg->seed, n_threads, secs);
+    free(job.res);
+    free(th);
+    free(ev);
+    return errors ? 1 : 0;
+}
+
+static void bench_usage(FILE *f)
+{
+    fprintf(f, "usage: neat_bench xor|pole|pole-nv|activation [--runs N] [--seed S] [--threads T]\n"
+               "                  [--config FILE.ini] [--dump-config] [--quiet]\n"
+               "Runs NEAT on a benchmark of the NEAT paper (Stanley & Miikkulainen 2002); the last line\n"
+               "of stdout is a JSON summary. Defaults come from bench/<task>.ini.\n");
+}
+
+static int bench_parse_u64(const char *opt, const char *s, uint64_t max, uint64_t *out)
+{
+    char *end;
+    unsigned long long v;
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (s[0] == '\0' || s[0] == '-' || *end != '\0' || errno || v > max) {
+        fprintf(stderr, "neat_bench: bad value '%s' for %s\n", s, opt);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    bench_cfg cfg;
+    const char *task, *config = NULL;
+    char path[1024];
+    uint64_t runs = 0, threads = 0, seed = 1;
+    int i, have_seed = 0, have_runs = 0, have_threads = 0, quiet = 0, dump = 0;
+
+    if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+        bench_usage(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    task = argv[1];
+    if (strcmp(task, "xor") && strcmp(task, "pole") && strcmp(task, "pole-nv") && strcmp(task, "activation")) {
+        fprintf(stderr, "neat_bench: unknown task '%s' (xor, pole, pole-nv or activation)\n", task);
+        return 2;
+    }
+    for (i = 2; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--quiet") == 0) {
+            quiet = 1;
+            continue;
+        }
+        if (strcmp(a, "--dump-config") == 0) {
+            dump = 1;
+            continue;
+        }
+        if (i + 1 >= argc) {
+            fprintf(stderr, "neat_bench: %s needs a value\n", a);
+            return 2;
+        }
+        if (strcmp(a, "--runs") == 0) {
+            if (bench_parse_u64(a, argv[++i], 100000, &runs) || runs == 0)
+                return 2;
+            have_runs = 1;
+        } else if (strcmp(a, "--seed") == 0) {
+            if (bench_parse_u64(a, argv[++i], UINT64_MAX, &seed))
+                return 2;
+            have_seed = 1;
+        } else if (strcmp(a, "--threads") == 0) {
+            if (bench_parse_u64(a, argv[++i], 1024, &threads))
+                return 2;
+            have_threads = 1;
+        } else if (strcmp(a, "--config") == 0) {
+            config = argv[++i];
+        } else {
+            fprintf(stderr, "neat_bench: unknown option '%s'\n", a);
+            return 2;
+        }
+    }
+    if (strcmp(task, "activation") == 0)
+        return bench_activation(seed, 0.5);
+
+    memset(&cfg, 0, sizeof cfg);
+    cfg.neat = neat_params_default();
+    cfg.runs = 10;
+    cfg.max_generations = 100;
+    cfg.balance_steps = 100000;
+    cfg.damping_steps = 1000;
+    cfg.generalization_min = 200;
+    if (config == NULL) {
+        snprintf(path, sizeof path, "%s/%s.ini", NEAT_BENCH_DIR, task);
+        config = path;
+    }
+    if (bench_load_config(&cfg, config) != 0)
+        return 2;
+    if (have_runs)
+        cfg.runs = (uint32_t)runs;
+    if (have_threads)
+        cfg.threads = (uint32_t)threads;
+    cfg.seed = have_seed ? seed : 1;
+    if (dump) {
+        printf("[bench]\n");
+        neat_config_dump_keys(stdout, bench_keys, BENCH_N_KEYS, &cfg);
+        printf("\n[neat]\n");
+        neat_config_dump(stdout, &cfg.neat);
+        return 0;
+    }
+    return bench_evolve(task, &cfg, quiet);
+}

@@ -1,0 +1,231 @@
+/* neat.h - NEAT (Stanley & Miikkulainen): genomes, historical markings, speciation, reproduction, blobs, checkpoints. */
+#ifndef NEAT_H
+#define NEAT_H
+
+/*
+ * libneat is plain C99 with no dependency beyond libc and the runtime's
+ * format header (nrt.h). It never prints, never exits, and allocates only
+ * through the neat_alloc hook given at creation. A run is a pure function of
+ * (parameters, seed, fitness values): the library hands out genomes, the
+ * caller evaluates them in any order on any number of threads, and gives the
+ * fitness back (neat_pop_set_fitness), then calls neat_pop_epoch.
+ *
+ *     neat_pop *pop;
+ *     neat_pop_create(&pop, &params, NULL, seed, NULL);
+ *     for (;;) {
+ *         for (i = 0; i < neat_pop_size(pop); i++)
+ *             neat_pop_set_fitness(pop, i, evaluate(neat_pop_genome(pop, i)));
+ *         neat_pop_epoch(pop);
+ *     }
+ */
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* ---- versions ---------------------------------------------------------- */
+#define NEAT_VERSION_MAJOR 0
+#define NEAT_VERSION_MINOR 1
+#define NEAT_CHECKPOINT_VERSION 1 /* checkpoint format, apart from the code */
+
+/* ---- errors ------------------------------------------------------------- */
+enum neat_error {
+    NEAT_OK = 0,
+    NEAT_E_ARG = -1,       /* bad argument (NULL, out of range) */
+    NEAT_E_NOMEM = -2,     /* the allocator refused */
+    NEAT_E_PARAM = -3,     /* a parameter out of its documented range */
+    NEAT_E_FITNESS = -4,   /* a fitness negative, NaN or infinite, or missing: see neat_pop_error_index */
+    NEAT_E_TOOBIG = -5,    /* a network too large for the blob format */
+    NEAT_E_FORMAT = -6,    /* checkpoint bytes: bad magic, version, size or value */
+    NEAT_E_CRC = -7,       /* checkpoint checksum mismatch */
+    NEAT_E_TRUNCATED = -8, /* checkpoint shorter than it says */
+    NEAT_E_STATE = -9      /* call out of order (e.g. fitness after epoch) */
+};
+
+/* ---- allocation: one realloc-style hook ---------------------------------
+ * fn(ud, ptr, old_size, new_size): new_size 0 frees ptr and returns NULL;
+ * otherwise it returns a block of new_size bytes holding the first
+ * min(old, new) bytes of ptr, or NULL when it refuses (ptr is then kept).
+ * A NULL neat_alloc pointer means the C library's realloc/free. */
+typedef void *(*neat_alloc_fn)(void *ud, void *ptr, size_t old_size, size_t new_size);
+typedef struct neat_alloc {
+    neat_alloc_fn fn;
+    void *ud;
+} neat_alloc;
+
+/* ---- the PRNG (xoshiro256**, seeded through splitmix64) ----------------- */
+typedef struct neat_rng {
+    uint64_t s[4];
+} neat_rng;
+
+void neat_rng_seed(neat_rng *rng, uint64_t seed);
+uint64_t neat_rng_next(neat_rng *rng);
+/* uniform in [0, 1), 53 bits */
+double neat_rng_uniform(neat_rng *rng);
+/* uniform integer in [0, n), n > 0, without modulo bias */
+uint32_t neat_rng_below(neat_rng *rng, uint32_t n);
+/* A seed derived from a base seed and a tuple of keys (e.g. generation,
+ * host, opponent, side): the same tuple gives the same seed on every
+ * machine, independently of evaluation order. */
+uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys);
+
+/* ---- parameters ---------------------------------------------------------
+ * neat_params_default() gives the paper's Appendix A values; every other
+ * value and its source is in docs/parameters.md. */
+enum neat_mode {
+    NEAT_MODE_COMPLEXIFY = 0, /* structural mutation adds nodes and connections */
+    NEAT_MODE_FIXED = 1,      /* no structural mutation */
+    NEAT_MODE_SIMPLIFY = 2    /* structural mutation removes connections */
+};
+
+typedef struct neat_params {
+    uint32_t pop_size;          /* 256 (Appendix A) */
+    uint32_t n_inputs;          /* sensors, not counting the bias */
+    uint32_t n_outputs;
+    int mode;                   /* enum neat_mode */
+    /* compatibility: delta = c1 E / N + c2 D / N + c3 W */
+    double c1, c2, c3;          /* 1, 1, 2 */
+    int normalize_by_size;      /* 0: N = 1 (Appendix A); 1: N = genes of the larger genome */
+    double delta_t;             /* initial threshold, 3.0 */
+    double delta_t_step;        /* 0.3 per generation */
+    double delta_t_min;         /* floor of the dynamic threshold */
+    uint32_t target_species;    /* 10; 0 keeps delta_t fixed */
+    /* reproduction */
+    double survival_fraction;   /* fraction of each species (best first) allowed to mate */
+    uint32_t elitism_min_size;  /* champion copied when the species has more than this: 5 */
+    uint32_t dropoff_age;       /* species older than this may be cut: 30 */
+    uint32_t pop_stagnation;    /* generations without a new population best before only the 2 best species breed; 0 = never */
+    double mutate_only_prob;    /* 0.25 */
+    double mate_only_prob;      /* offspring of crossover left unmutated */
+    double interspecies_prob;   /* 0.05 */
+    double mate_avg_prob;       /* 0.4: matching weights averaged */
+    double disable_prob;        /* 0.75: inherited gene disabled if disabled in either parent */
+    double excess_equal_prob;   /* at equal fitness, each disjoint/excess gene of either parent is kept with this */
+    /* mutation */
+    double weight_mut_prob;     /* 0.8 */
+    double weight_perturb_prob; /* 0.9 (else a new random value) */
+    double weight_perturb_power;/* perturbation uniform in [-power, power] */
+    double weight_init_range;   /* new weights uniform in [-range, range] */
+    double weight_max;          /* |w| clamp; must fit the blob's Q3.12 range */
+    double add_conn_prob;       /* 0.1 */
+    double add_node_prob;       /* 0.01 */
+    uint32_t add_conn_tries;    /* attempts to find an unconnected pair */
+    int allow_recurrent;        /* 1: recurrent and self connections may be added */
+    double toggle_enable_prob;  /* re-enable a disabled gene (as mutation) */
+    uint32_t max_nodes;         /* never more nodes than the blob format allows (256) */
+} neat_params;
+
+neat_params neat_params_default(void);
+/* NEAT_OK, or NEAT_E_PARAM with *field set to the offending field's name. */
+int neat_params_check(const neat_params *p, const char **field);
+
+/* ---- genomes ------------------------------------------------------------ */
+enum neat_node_type { NEAT_NODE_BIAS = 0, NEAT_NODE_INPUT = 1, NEAT_NODE_OUTPUT = 2, NEAT_NODE_HIDDEN = 3 };
+
+typedef struct neat_node {
+    uint32_t id;   /* bias 0, inputs 1..n, outputs next, hidden from the population's counter */
+    uint8_t type;  /* enum neat_node_type */
+} neat_node;
+
+typedef struct neat_conn {
+    uint32_t in, out; /* node ids */
+    double weight;
+    uint32_t innov;   /* historical marking */
+    uint8_t enabled;
+} neat_conn;
+
+/* Nodes sorted by id, connections by innovation number. */
+typedef struct neat_genome {
+    neat_node *nodes;
+    neat_conn *conns;
+    uint32_t n_nodes, n_conns;
+    uint32_t cap_nodes, cap_conns;
+    double fitness;
+    uint32_t species;   /* id of its species */
+    uint8_t has_fitness;
+} neat_genome;
+
+/* A start topology handed to neat_pop_create (weights are re-drawn for every
+ * individual unless keep_weights): either built with the constructors below,
+ * or by hand with neat_genome_add_node / neat_genome_add_conn. */
+void neat_genome_init(neat_genome *g);
+void neat_genome_free(neat_genome *g, const neat_alloc *a);
+int neat_genome_copy(neat_genome *dst, const neat_genome *src, const neat_alloc *a);
+int neat_genome_add_node(neat_genome *g, uint32_t id, int type, const neat_alloc *a);
+int neat_genome_add_conn(neat_genome *g, uint32_t in, uint32_t out, double weight, uint32_t innov, int enabled,
+                         const neat_alloc *a);
+/* bias and every input connected to every output (the paper's minimal start) */
+int neat_genome_minimal(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, const neat_alloc *a);
+/* H hidden nodes: bias+inputs -> hidden, hidden -> hidden (all pairs, self
+ * included), hidden -> outputs, plus bias+inputs -> outputs */
+int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint32_t n_hidden,
+                                 const neat_alloc *a);
+uint32_t neat_genome_hidden_count(const neat_genome *g);
+uint32_t neat_genome_enabled_count(const neat_genome *g);
+/* Compatibility distance delta under p (c1, c2, c3, normalize_by_size). */
+double neat_genome_distance(const neat_genome *a, const neat_genome *b, const neat_params *p);
+
+/* ---- phenotype: genome -> champion blob (docs/formats.md) ---------------- */
+/* Bytes the blob of g takes: 32 + 4 per enabled connection. */
+size_t neat_blob_size(const neat_genome *g);
+/* Writes the blob into buf (cap bytes). NEAT_E_TOOBIG if the network has more
+ * than 256 nodes or 65535 enabled connections; NEAT_E_ARG if cap is short. */
+int neat_blob_write(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t *buf, size_t cap,
+                    size_t *len);
+
+/* ---- population ---------------------------------------------------------- */
+typedef struct neat_pop neat_pop;
+
+/* start: NULL for the minimal start, or a start topology (its nodes and
+ * innovations are the population's first; weights re-drawn unless
+ * keep_weights). In simplify mode all innovations come from the start. */
+typedef struct neat_start {
+    const neat_genome *genome;
+    int keep_weights;
+} neat_start;
+
+int neat_pop_create(neat_pop **out, const neat_params *p, const neat_start *start, uint64_t seed,
+                    const neat_alloc *alloc);
+void neat_pop_free(neat_pop *pop);
+
+uint32_t neat_pop_size(const neat_pop *pop);
+uint32_t neat_pop_generation(const neat_pop *pop);
+const neat_params *neat_pop_params(const neat_pop *pop);
+const neat_genome *neat_pop_genome(const neat_pop *pop, uint32_t i);
+/* Thread-safe for distinct i. Rejects NaN, infinity and negatives (NEAT_E_FITNESS). */
+int neat_pop_set_fitness(neat_pop *pop, uint32_t i, double fitness);
+/* Speciate done, fitness set for every genome: next generation. On
+ * NEAT_E_FITNESS, neat_pop_error_index names the first bad genome and the
+ * population is unchanged. */
+int neat_pop_epoch(neat_pop *pop);
+uint32_t neat_pop_error_index(const neat_pop *pop);
+
+/* After an epoch: the best genome of the generation just evaluated (highest
+ * fitness, lowest index on ties), and the best ever. NULL before any epoch. */
+const neat_genome *neat_pop_last_best(const neat_pop *pop);
+const neat_genome *neat_pop_best_ever(const neat_pop *pop);
+
+/* Species of the current generation. */
+typedef struct neat_species_info {
+    uint32_t id;
+    uint32_t size;
+    uint32_t age;            /* generations since creation */
+    uint32_t since_improved; /* generations since its best fitness rose */
+    double best_fitness;     /* best fitness ever of the species */
+} neat_species_info;
+uint32_t neat_pop_species_count(const neat_pop *pop);
+int neat_pop_species(const neat_pop *pop, uint32_t k, neat_species_info *info);
+double neat_pop_delta_t(const neat_pop *pop);
+uint32_t neat_pop_innovations(const neat_pop *pop); /* innovation numbers used so far */
+
+/* ---- checkpoints (docs/formats.md) --------------------------------------
+ * The whole state: parameters, genomes, species, delta_t, innovation list,
+ * counters, PRNG, generation, fitness. Loading it and running on gives the
+ * same run as never stopping. */
+int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len); /* *buf from the pop's allocator */
+void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len);
+/* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
+int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+
+const char *neat_strerror(int err);
+
+#endif /* NEAT_H */

@@ -1,0 +1,100 @@
+/* neat_blob.c - genome -> champion blob: the phenotype the runtime executes (format in docs/formats.md). */
+#include <math.h>
+#include <string.h>
+
+#include "nrt.h"
+#include "neat_internal.h"
+
+size_t neat_blob_size(const neat_genome *g)
+{
+    return NRT_HEADER_SIZE + NRT_CONN_SIZE * (size_t)neat_genome_enabled_count(g);
+}
+
+static void neat_wr16(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)(v & 0xFF);
+    p[1] = (uint8_t)((v >> 8) & 0xFF);
+}
+
+static void neat_wr32(uint8_t *p, uint32_t v)
+{
+    neat_wr16(p, v & 0xFFFF);
+    neat_wr16(p + 2, v >> 16);
+}
+
+/* Runtime index of a node = its position in the genome: bias 0, inputs
+ * 1..n_in, outputs next (neat_blob_write checks these ids), then hidden
+ * nodes in id order. */
+static uint32_t neat_blob_index(const neat_genome *g, uint32_t id)
+{
+    return (uint32_t)(neat_genome_find_node(g, id) - g->nodes);
+}
+
+static int32_t neat_quantize(double w)
+{
+    double q = floor(w * (double)(1 << NRT_WEIGHT_FRAC_BITS) + 0.5);
+    if (q > NRT_WEIGHT_MAX)
+        q = NRT_WEIGHT_MAX;
+    if (q < NRT_WEIGHT_MIN)
+        q = NRT_WEIGHT_MIN;
+    return (int32_t)q;
+}
+
+int neat_blob_write(const neat_genome *g, uint32_t n_in, uint32_t n_out, uint8_t *buf, size_t cap, size_t *len)
+{
+    uint32_t i, k, n = 0, n_hid, nodes;
+    size_t size;
+    uint32_t crc;
+
+    if (g == NULL || buf == NULL)
+        return NEAT_E_ARG;
+    n_hid = neat_genome_hidden_count(g);
+    nodes = n_in + 1 + n_out + n_hid;
+    if (nodes != g->n_nodes || !neat_genome_io_ok(g, n_in, n_out))
+        return NEAT_E_ARG; /* n_in / n_out do not match the genome */
+    if (nodes > NRT_MAX_NODES || neat_genome_enabled_count(g) > 0xFFFF)
+        return NEAT_E_TOOBIG;
+    size = neat_blob_size(g);
+    if (cap < size)
+        return NEAT_E_ARG;
+
+    memset(buf, 0, NRT_HEADER_SIZE);
+    buf[0] = NRT_MAGIC0;
+    buf[1] = NRT_MAGIC1;
+    buf[2] = NRT_MAGIC2;
+    buf[3] = NRT_MAGIC3;
+    neat_wr16(buf + NRT_OFF_VERSION, NRT_FORMAT_VERSION);
+    neat_wr16(buf + NRT_OFF_HEADER_SIZE, NRT_HEADER_SIZE);
+    neat_wr16(buf + NRT_OFF_INPUTS, n_in + 1);
+    neat_wr16(buf + NRT_OFF_OUTPUTS, n_out);
+    neat_wr16(buf + NRT_OFF_HIDDEN, n_hid);
+    neat_wr16(buf + NRT_OFF_CONNS, neat_genome_enabled_count(g));
+    neat_wr32(buf + NRT_OFF_TOTAL_SIZE, (uint32_t)size);
+    buf[NRT_OFF_WEIGHT_BITS] = NRT_WEIGHT_FRAC_BITS;
+    buf[NRT_OFF_ACTIVATION] = NRT_ACT_SIGMOID49;
+
+    for (i = 0; i < g->n_conns; i++) {
+        const neat_conn *c = &g->conns[i];
+        uint8_t rec[4];
+        if (!c->enabled)
+            continue;
+        rec[0] = (uint8_t)neat_blob_index(g, c->in);
+        rec[1] = (uint8_t)neat_blob_index(g, c->out);
+        neat_wr16(rec + 2, (uint32_t)neat_quantize(c->weight) & 0xFFFF);
+        /* insertion into (target, source) order, which the runtime requires */
+        for (k = n; k > 0; k--) {
+            uint8_t *prev = buf + NRT_HEADER_SIZE + 4 * (k - 1);
+            if (prev[1] < rec[1] || (prev[1] == rec[1] && prev[0] <= rec[0]))
+                break;
+            memcpy(prev + 4, prev, 4);
+        }
+        memcpy(buf + NRT_HEADER_SIZE + 4 * k, rec, 4);
+        n++;
+    }
+    crc = nrt_crc32(0, buf, NRT_OFF_CRC);
+    crc = nrt_crc32(crc, buf + NRT_HEADER_SIZE, size - NRT_HEADER_SIZE);
+    neat_wr32(buf + NRT_OFF_CRC, crc);
+    if (len != NULL)
+        *len = size;
+    return NEAT_OK;
+}

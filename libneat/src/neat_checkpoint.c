@@ -1,0 +1,478 @@
+/* neat_checkpoint.c - the population checkpoint: every bit of state, little endian, CRC-32 sealed (docs/formats.md). */
+#include <string.h>
+
+#include "nrt.h"
+#include "neat_internal.h"
+
+static const uint8_t neat_ckpt_magic[8] = {'N', 'E', 'A', 'T', 'C', 'K', 'P', 'T'};
+
+/* ---- writing ---- */
+typedef struct neat_wbuf {
+    uint8_t *p;
+    size_t n, cap;
+    const neat_alloc *a;
+    int err;
+} neat_wbuf;
+
+static void neat_put(neat_wbuf *w, const void *src, size_t len)
+{
+    if (w->err)
+        return;
+    if (w->n + len > w->cap) {
+        size_t ncap = w->cap ? w->cap : 4096;
+        uint8_t *np;
+        while (ncap < w->n + len)
+            ncap *= 2;
+        np = (uint8_t *)neat_mem_realloc(w->a, w->p, w->cap, ncap);
+        if (np == NULL) {
+            w->err = NEAT_E_NOMEM;
+            return;
+        }
+        w->p = np;
+        w->cap = ncap;
+    }
+    memcpy(w->p + w->n, src, len);
+    w->n += len;
+}
+
+static void neat_put_u8(neat_wbuf *w, uint32_t v)
+{
+    uint8_t b = (uint8_t)v;
+    neat_put(w, &b, 1);
+}
+
+static void neat_put_u32(neat_wbuf *w, uint32_t v)
+{
+    uint8_t b[4];
+    b[0] = (uint8_t)v;
+    b[1] = (uint8_t)(v >> 8);
+    b[2] = (uint8_t)(v >> 16);
+    b[3] = (uint8_t)(v >> 24);
+    neat_put(w, b, 4);
+}
+
+static void neat_put_u64(neat_wbuf *w, uint64_t v)
+{
+    neat_put_u32(w, (uint32_t)v);
+    neat_put_u32(w, (uint32_t)(v >> 32));
+}
+
+static void neat_put_f64(neat_wbuf *w, double d)
+{
+    uint64_t v;
+    memcpy(&v, &d, 8); /* the exact IEEE-754 bits */
+    neat_put_u64(w, v);
+}
+
+/* ---- reading: every read is bounds checked and remembers where it failed ---- */
+typedef struct neat_rbuf {
+    const uint8_t *p;
+    size_t n, off;
+    int err;
+    size_t err_off;
+} neat_rbuf;
+
+static void neat_fail(neat_rbuf *r, int err)
+{
+    if (!r->err) {
+        r->err = err;
+        r->err_off = r->off;
+    }
+}
+
+static const uint8_t *neat_get(neat_rbuf *r, size_t len)
+{
+    const uint8_t *q;
+    if (r->err)
+        return NULL;
+    if (r->n - r->off < len) {
+        neat_fail(r, NEAT_E_TRUNCATED);
+        return NULL;
+    }
+    q = r->p + r->off;
+    r->off += len;
+    return q;
+}
+
+static uint32_t neat_get_u8(neat_rbuf *r)
+{
+    const uint8_t *q = neat_get(r, 1);
+    return q ? q[0] : 0;
+}
+
+static uint32_t neat_get_u32(neat_rbuf *r)
+{
+    const uint8_t *q = neat_get(r, 4);
+    return q ? (uint32_t)q[0] | ((uint32_t)q[1] << 8) | ((uint32_t)q[2] << 16) | ((uint32_t)q[3] << 24) : 0;
+}
+
+static uint64_t neat_get_u64(neat_rbuf *r)
+{
+    uint64_t lo = neat_get_u32(r);
+    return lo | ((uint64_t)neat_get_u32(r) << 32);
+}
+
+static double neat_get_f64(neat_rbuf *r)
+{
+    uint64_t v = neat_get_u64(r);
+    double d;
+    memcpy(&d, &v, 8);
+    return d;
+}
+
+/* a count of records of rec_size bytes that must fit in what is left */
+static uint32_t neat_get_count(neat_rbuf *r, size_t rec_size)
+{
+    size_t at = r->off;
+    uint32_t n = neat_get_u32(r);
+    if (!r->err && (size_t)n > (r->n - r->off) / rec_size) {
+        r->off = at;
+        neat_fail(r, NEAT_E_FORMAT);
+        return 0;
+    }
+    return n;
+}
+
+/* ---- parameters: one fixed order, the struct's ---- */
+static void neat_put_params(neat_wbuf *w, const neat_params *p)
+{
+    neat_put_u32(w, p->pop_size);
+    neat_put_u32(w, p->n_inputs);
+    neat_put_u32(w, p->n_outputs);
+    neat_put_u32(w, (uint32_t)p->mode);
+    neat_put_f64(w, p->c1);
+    neat_put_f64(w, p->c2);
+    neat_put_f64(w, p->c3);
+    neat_put_u32(w, (uint32_t)p->normalize_by_size);
+    neat_put_f64(w, p->delta_t);
+    neat_put_f64(w, p->delta_t_step);
+    neat_put_f64(w, p->delta_t_min);
+    neat_put_u32(w, p->target_species);
+    neat_put_f64(w, p->survival_fraction);
+    neat_put_u32(w, p->elitism_min_size);
+    neat_put_u32(w, p->dropoff_age);
+    neat_put_u32(w, p->pop_stagnation);
+    neat_put_f64(w, p->mutate_only_prob);
+    neat_put_f64(w, p->mate_only_prob);
+    neat_put_f64(w, p->interspecies_prob);
+    neat_put_f64(w, p->mate_avg_prob);
+    neat_put_f64(w, p->disable_prob);
+    neat_put_f64(w, p->excess_equal_prob);
+    neat_put_f64(w, p->weight_mut_prob);
+    neat_put_f64(w, p->weight_perturb_prob);
+    neat_put_f64(w, p->weight_perturb_power);
+    neat_put_f64(w, p->weight_init_range);
+    neat_put_f64(w, p->weight_max);
+    neat_put_f64(w, p->add_conn_prob);
+    neat_put_f64(w, p->add_node_prob);
+    neat_put_u32(w, p->add_conn_tries);
+    neat_put_u32(w, (uint32_t)p->allow_recurrent);
+    neat_put_u32(w, p->max_nodes);
+}
+
+static void neat_get_params(neat_rbuf *r, neat_params *p)
+{
+    p->pop_size = neat_get_u32(r);
+    p->n_inputs = neat_get_u32(r);
+    p->n_outputs = neat_get_u32(r);
+    p->mode = (int)neat_get_u32(r);
+    p->c1 = neat_get_f64(r);
+    p->c2 = neat_get_f64(r);
+    p->c3 = neat_get_f64(r);
+    p->normalize_by_size = (int)neat_get_u32(r);
+    p->delta_t = neat_get_f64(r);
+    p->delta_t_step = neat_get_f64(r);
+    p->delta_t_min = neat_get_f64(r);
+    p->target_species = neat_get_u32(r);
+    p->survival_fraction = neat_get_f64(r);
+    p->elitism_min_size = neat_get_u32(r);
+    p->dropoff_age = neat_get_u32(r);
+    p->pop_stagnation = neat_get_u32(r);
+    p->mutate_only_prob = neat_get_f64(r);
+    p->mate_only_prob = neat_get_f64(r);
+    p->interspecies_prob = neat_get_f64(r);
+    p->mate_avg_prob = neat_get_f64(r);
+    p->disable_prob = neat_get_f64(r);
+    p->excess_equal_prob = neat_get_f64(r);
+    p->weight_mut_prob = neat_get_f64(r);
+    p->weight_perturb_prob = neat_get_f64(r);
+    p->weight_perturb_power = neat_get_f64(r);
+    p->weight_init_range = neat_get_f64(r);
+    p->weight_max = neat_get_f64(r);
+    p->add_conn_prob = neat_get_f64(r);
+    p->add_node_prob = neat_get_f64(r);
+    p->add_conn_tries = neat_get_u32(r);
+    p->allow_recurrent = (int)neat_get_u32(r);
+    p->max_nodes = neat_get_u32(r);
+}
+
+/* ---- genomes ---- */
+static void neat_put_genome(neat_wbuf *w, const neat_genome *g)
+{
+    uint32_t i;
+    neat_put_u32(w, g->n_nodes);
+    for (i = 0; i < g->n_nodes; i++) {
+        neat_put_u32(w, g->nodes[i].id);
+        neat_put_u8(w, g->nodes[i].type);
+    }
+    neat_put_u32(w, g->n_conns);
+    for (i = 0; i < g->n_conns; i++) {
+        neat_put_u32(w, g->conns[i].in);
+        neat_put_u32(w, g->conns[i].out);
+        neat_put_u32(w, g->conns[i].innov);
+        neat_put_f64(w, g->conns[i].weight);
+        neat_put_u8(w, g->conns[i].enabled);
+    }
+    neat_put_f64(w, g->fitness);
+    neat_put_u32(w, g->species);
+    neat_put_u8(w, g->has_fitness);
+}
+
+/* Rebuilds through the genome API, so a bad id, type, order or dangling
+ * connection is refused as the API would refuse it. */
+static void neat_get_genome(neat_rbuf *r, neat_genome *g, const neat_params *p, const neat_alloc *a)
+{
+    uint32_t i, n;
+    size_t start = r->off;
+    n = neat_get_count(r, 5);
+    for (i = 0; i < n && !r->err; i++) {
+        size_t at = r->off;
+        uint32_t id = neat_get_u32(r), type = neat_get_u8(r);
+        int err = r->err ? 0 : neat_genome_add_node(g, id, (int)type, a);
+        if (err || (g->n_nodes > 1 && g->nodes[g->n_nodes - 1].id != id)) {
+            r->off = at;
+            neat_fail(r, err == NEAT_E_NOMEM ? NEAT_E_NOMEM : NEAT_E_FORMAT); /* not sorted, duplicate or bad type */
+        }
+    }
+    n = neat_get_count(r, 21);
+    for (i = 0; i < n && !r->err; i++) {
+        size_t at = r->off;
+        uint32_t in = neat_get_u32(r), out = neat_get_u32(r), innov = neat_get_u32(r);
+        double wt = neat_get_f64(r);
+        uint32_t en = neat_get_u8(r);
+        int err = r->err ? 0 : neat_genome_add_conn(g, in, out, wt, innov, (int)en, a);
+        if (err || en > 1 || (g->n_conns > 0 && g->conns[g->n_conns - 1].innov != innov) || wt != wt) {
+            r->off = at;
+            neat_fail(r, err == NEAT_E_NOMEM ? NEAT_E_NOMEM : NEAT_E_FORMAT);
+        }
+    }
+    g->fitness = neat_get_f64(r);
+    g->species = neat_get_u32(r);
+    g->has_fitness = (uint8_t)neat_get_u8(r);
+    if (!r->err && (!neat_genome_io_ok(g, p->n_inputs, p->n_outputs) || g->n_nodes > p->max_nodes ||
+                    g->has_fitness > 1 || !(g->fitness >= 0) || g->fitness > 1e308)) {
+        r->off = start;
+        neat_fail(r, NEAT_E_FORMAT);
+    }
+}
+
+int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len)
+{
+    neat_wbuf w;
+    uint32_t i, k;
+    if (pop == NULL || buf == NULL || len == NULL)
+        return NEAT_E_ARG;
+    memset(&w, 0, sizeof w);
+    w.a = &pop->a;
+    neat_put(&w, neat_ckpt_magic, 8);
+    neat_put_u32(&w, NEAT_CHECKPOINT_VERSION);
+    neat_put_params(&w, &pop->p);
+    for (i = 0; i < 4; i++)
+        neat_put_u64(&w, pop->rng.s[i]);
+    neat_put_u32(&w, pop->generation);
+    neat_put_u32(&w, pop->iv.next_innov);
+    neat_put_u32(&w, pop->iv.next_node);
+    neat_put_u32(&w, pop->next_species_id);
+    neat_put_u32(&w, pop->since_pop_improved);
+    neat_put_f64(&w, pop->delta_t);
+    neat_put_u32(&w, pop->iv.n);
+    for (i = 0; i < pop->iv.n; i++) {
+        const neat_innov *v = &pop->iv.list[i];
+        neat_put_u8(&w, v->kind);
+        neat_put_u32(&w, v->in);
+        neat_put_u32(&w, v->out);
+        neat_put_u32(&w, v->split);
+        neat_put_u32(&w, v->innov);
+        neat_put_u32(&w, v->innov2);
+        neat_put_u32(&w, v->node);
+    }
+    neat_put_u8(&w, pop->have_best);
+    if (pop->have_best) {
+        neat_put_genome(&w, &pop->best_ever);
+        neat_put_genome(&w, &pop->last_best);
+    }
+    for (i = 0; i < pop->p.pop_size; i++)
+        neat_put_genome(&w, &pop->genomes[i]);
+    neat_put_u32(&w, pop->n_species);
+    for (k = 0; k < pop->n_species; k++) {
+        const neat_species *s = &pop->species[k];
+        neat_put_u32(&w, s->id);
+        neat_put_u32(&w, s->age);
+        neat_put_u32(&w, s->since_improved);
+        neat_put_f64(&w, s->best_fitness);
+        neat_put_genome(&w, &s->rep);
+        neat_put_u32(&w, s->n_members);
+        for (i = 0; i < s->n_members; i++)
+            neat_put_u32(&w, s->members[i]);
+    }
+    if (!w.err)
+        neat_put_u32(&w, nrt_crc32(0, w.p, w.n));
+    if (w.err) {
+        neat_mem_free(w.a, w.p, w.cap);
+        return w.err;
+    }
+    *buf = w.p;
+    *len = w.n;
+    /* the caller frees with neat_pop_buf_free, which needs the capacity: shrink to fit */
+    if (w.cap != w.n) {
+        uint8_t *np = (uint8_t *)neat_mem_realloc(w.a, w.p, w.cap, w.n);
+        if (np == NULL) {
+            neat_mem_free(w.a, w.p, w.cap);
+            return NEAT_E_NOMEM;
+        }
+        *buf = np;
+    }
+    return NEAT_OK;
+}
+
+void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len)
+{
+    neat_mem_free(&pop->a, buf, len);
+}
+
+int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset)
+{
+    neat_rbuf r;
+    neat_params p;
+    neat_pop *pop = NULL;
+    uint32_t i, k, n, stored_crc;
+    const uint8_t *magic;
+    uint8_t *seen = NULL;
+    int err;
+
+    if (out == NULL || buf == NULL)
+        return NEAT_E_ARG;
+    *out = NULL;
+    memset(&r, 0, sizeof r);
+    r.p = buf;
+    r.n = len;
+    /* the frame first: magic, version, checksum; then trust the rest */
+    magic = neat_get(&r, 8);
+    if (magic != NULL && memcmp(magic, neat_ckpt_magic, 8) != 0) {
+        r.off = 0;
+        neat_fail(&r, NEAT_E_FORMAT);
+    }
+    if (!r.err && neat_get_u32(&r) != NEAT_CHECKPOINT_VERSION && !r.err) {
+        r.off = 8;
+        neat_fail(&r, NEAT_E_FORMAT);
+    }
+    if (!r.err && len < 16) {
+        r.off = len;
+        neat_fail(&r, NEAT_E_TRUNCATED);
+    }
+    if (!r.err) {
+        stored_crc = (uint32_t)buf[len - 4] | ((uint32_t)buf[len - 3] << 8) | ((uint32_t)buf[len - 2] << 16) |
+                     ((uint32_t)buf[len - 1] << 24);
+        if (nrt_crc32(0, buf, len - 4) != stored_crc) {
+            r.off = len - 4;
+            neat_fail(&r, NEAT_E_CRC);
+        }
+        r.n = len - 4; /* the body ends at the checksum */
+    }
+    if (!r.err) {
+        size_t at = r.off;
+        neat_get_params(&r, &p);
+        if (!r.err && neat_params_check(&p, NULL) != NEAT_OK) {
+            r.off = at;
+            neat_fail(&r, NEAT_E_FORMAT);
+        }
+    }
+    if (!r.err) {
+        err = neat_pop_alloc(&pop, &p, alloc);
+        if (err)
+            neat_fail(&r, err);
+    }
+    if (!r.err) {
+        for (i = 0; i < 4; i++)
+            pop->rng.s[i] = neat_get_u64(&r);
+        pop->generation = neat_get_u32(&r);
+        pop->iv.next_innov = neat_get_u32(&r);
+        pop->iv.next_node = neat_get_u32(&r);
+        pop->next_species_id = neat_get_u32(&r);
+        pop->since_pop_improved = neat_get_u32(&r);
+        pop->delta_t = neat_get_f64(&r);
+        n = neat_get_count(&r, 25);
+        if (!r.err && neat_mem_reserve(&pop->a, (void **)&pop->iv.list, &pop->iv.cap, n, sizeof(neat_innov)))
+            neat_fail(&r, NEAT_E_NOMEM);
+        for (i = 0; i < n && !r.err; i++) {
+            neat_innov *v = &pop->iv.list[i];
+            v->kind = (uint8_t)neat_get_u8(&r);
+            v->in = neat_get_u32(&r);
+            v->out = neat_get_u32(&r);
+            v->split = neat_get_u32(&r);
+            v->innov = neat_get_u32(&r);
+            v->innov2 = neat_get_u32(&r);
+            v->node = neat_get_u32(&r);
+            pop->iv.n = i + 1;
+        }
+        pop->have_best = (uint8_t)neat_get_u8(&r);
+        if (pop->have_best > 1)
+            neat_fail(&r, NEAT_E_FORMAT);
+        if (pop->have_best) {
+            neat_get_genome(&r, &pop->best_ever, &p, &pop->a);
+            neat_get_genome(&r, &pop->last_best, &p, &pop->a);
+        }
+        for (i = 0; i < p.pop_size && !r.err; i++)
+            neat_get_genome(&r, &pop->genomes[i], &p, &pop->a);
+        n = neat_get_count(&r, 33);
+        seen = (uint8_t *)neat_mem_realloc(&pop->a, NULL, 0, p.pop_size);
+        if (seen == NULL)
+            neat_fail(&r, NEAT_E_NOMEM);
+        else
+            memset(seen, 0, p.pop_size);
+        if (!r.err && neat_mem_reserve(&pop->a, (void **)&pop->species, &pop->cap_species, n, sizeof(neat_species)))
+            neat_fail(&r, NEAT_E_NOMEM);
+        for (k = 0; k < n && !r.err; k++) {
+            neat_species *s = &pop->species[k];
+            memset(s, 0, sizeof *s);
+            pop->n_species = k + 1;
+            s->id = neat_get_u32(&r);
+            s->age = neat_get_u32(&r);
+            s->since_improved = neat_get_u32(&r);
+            s->best_fitness = neat_get_f64(&r);
+            neat_get_genome(&r, &s->rep, &p, &pop->a);
+            s->n_members = 0;
+            {
+                uint32_t m = neat_get_count(&r, 4);
+                if (!r.err && neat_mem_reserve(&pop->a, (void **)&s->members, &s->cap_members, m, sizeof(uint32_t)))
+                    neat_fail(&r, NEAT_E_NOMEM);
+                if (!r.err && m == 0)
+                    neat_fail(&r, NEAT_E_FORMAT); /* a species without members cannot exist */
+                for (i = 0; i < m && !r.err; i++) {
+                    size_t at = r.off;
+                    uint32_t idx = neat_get_u32(&r);
+                    if (!r.err && (idx >= p.pop_size || seen[idx]++)) {
+                        r.off = at;
+                        neat_fail(&r, NEAT_E_FORMAT);
+                    }
+                    s->members[s->n_members++] = idx;
+                }
+            }
+        }
+        /* every genome in exactly one species */
+        for (i = 0; i < p.pop_size && !r.err; i++)
+            if (!seen[i])
+                neat_fail(&r, NEAT_E_FORMAT);
+        if (!r.err && r.off != r.n)
+            neat_fail(&r, NEAT_E_FORMAT); /* bytes left over */
+        neat_mem_free(&pop->a, seen, p.pop_size);
+    }
+    if (r.err) {
+        if (err_offset != NULL)
+            *err_offset = r.err_off;
+        neat_pop_free(pop);
+        return r.err;
+    }
+    *out = pop;
+    return NEAT_OK;
+}

@@ -1,0 +1,105 @@
+/* neat_internal.h - libneat's internal state and the functions its modules share. */
+#ifndef NEAT_INTERNAL_H
+#define NEAT_INTERNAL_H
+
+#include "neat.h"
+
+/* ---- memory (neat_alloc.c) ---- */
+void *neat_mem_realloc(const neat_alloc *a, void *ptr, size_t old_size, size_t new_size);
+void neat_mem_free(const neat_alloc *a, void *ptr, size_t size);
+/* grows *arr (elem bytes each) to hold at least need elements; 0 or NEAT_E_NOMEM */
+int neat_mem_reserve(const neat_alloc *a, void **arr, uint32_t *cap, uint32_t need, size_t elem);
+
+/* ---- innovation list of the current generation (neat_innov.c) ---- */
+enum { NEAT_INNOV_CONN = 0, NEAT_INNOV_NODE = 1 };
+typedef struct neat_innov {
+    uint8_t kind;
+    uint32_t in, out, split; /* split: innovation of the connection an added node split */
+    uint32_t innov;          /* the new connection; for a node: in -> node */
+    uint32_t innov2;         /* node -> out */
+    uint32_t node;           /* the new node's id */
+} neat_innov;
+
+typedef struct neat_innovs {
+    neat_innov *list;
+    uint32_t n, cap;
+    uint32_t next_innov; /* global counters */
+    uint32_t next_node;
+} neat_innovs;
+
+int neat_innov_conn(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, uint32_t *innov);
+int neat_innov_node(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, uint32_t split,
+                    neat_innov *out_rec);
+void neat_innov_reset(neat_innovs *iv); /* start of every generation's reproduction */
+
+/* ---- genome helpers (neat_genome.c) ---- */
+const neat_node *neat_genome_find_node(const neat_genome *g, uint32_t id);
+/* bias id 0, inputs 1..n_in, outputs next, all other nodes hidden */
+int neat_genome_io_ok(const neat_genome *g, uint32_t n_in, uint32_t n_out);
+int neat_genome_has_link(const neat_genome *g, uint32_t in, uint32_t out);
+/* weights uniform in [-range, range] */
+void neat_genome_randomize(neat_genome *g, neat_rng *rng, double range);
+
+/* ---- mutation and crossover (neat_mutate.c, neat_crossover.c) ---- */
+int neat_mutate(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs *iv, const neat_alloc *a);
+int neat_mutate_weights(neat_genome *g, const neat_params *p, neat_rng *rng);
+int neat_mutate_add_conn(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs *iv, const neat_alloc *a);
+int neat_mutate_add_node(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs *iv, const neat_alloc *a);
+int neat_mutate_remove_conn(neat_genome *g, neat_rng *rng);
+/* child from mom and dad (fitness decides disjoint/excess); avg: average matching weights */
+int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome *dad, int avg, const neat_params *p,
+                   neat_rng *rng, const neat_alloc *a);
+
+/* ---- species (neat_species.c) ---- */
+typedef struct neat_species {
+    uint32_t id;
+    uint32_t age;
+    uint32_t since_improved;
+    double best_fitness;
+    neat_genome rep;   /* representative, a member of the previous generation */
+    uint32_t *members; /* indices into pop->genomes, best first after neat_species_rank */
+    uint32_t n_members, cap_members;
+    /* per-epoch scratch (neat_apportion) */
+    double adj_sum;    /* sum of the members' shared fitness */
+    double remainder;  /* fractional part of its quota */
+    uint32_t offspring;
+    uint8_t eligible;  /* may breed this generation */
+} neat_species;
+
+/* ---- the population ---- */
+struct neat_pop {
+    neat_params p;
+    neat_alloc a;
+    neat_rng rng;
+    uint32_t generation;
+    neat_innovs iv;
+    double delta_t;
+    neat_genome *genomes; /* [p.pop_size] */
+    neat_species *species;
+    uint32_t n_species, cap_species;
+    uint32_t next_species_id;
+    neat_genome best_ever, last_best;
+    uint8_t have_best;
+    uint32_t since_pop_improved;
+    uint32_t err_index;
+};
+
+/* An empty population holding p and the allocator (neat_pop.c; used by
+ * neat_pop_create and neat_pop_load). */
+int neat_pop_alloc(neat_pop **out, const neat_params *p, const neat_alloc *alloc);
+
+/* Sorts the genomes into species (pop->species' representatives are from
+ * the previous generation), drops empty species and moves delta_t. */
+int neat_speciate(neat_pop *pop);
+/* Members of each species best first (ties: lower index); updates best
+ * fitness and the improvement counters. */
+void neat_species_rank(neat_pop *pop);
+void neat_species_free(neat_species *s, const neat_alloc *a);
+
+/* ---- reproduction (neat_reproduce.c) ---- */
+/* offspring per species: sum == pop_size, whatever the fitness values */
+void neat_apportion(neat_pop *pop);
+/* the next generation into next[pop_size] (initialised genomes) */
+int neat_reproduce(neat_pop *pop, neat_genome *next);
+
+#endif /* NEAT_INTERNAL_H */

@@ -1,0 +1,172 @@
+/* neat_mutate.c - mutation: weights, add connection, add node (complexifying), remove connection (simplifying). */
+#include <string.h>
+
+#include "neat_internal.h"
+
+static double neat_clamp(double w, double max)
+{
+    return w > max ? max : (w < -max ? -max : w);
+}
+
+int neat_mutate_weights(neat_genome *g, const neat_params *p, neat_rng *rng)
+{
+    uint32_t i;
+    for (i = 0; i < g->n_conns; i++) {
+        double u = neat_rng_uniform(rng), r = 2.0 * neat_rng_uniform(rng) - 1.0;
+        double *w = &g->conns[i].weight;
+        if (u < p->weight_perturb_prob)
+            *w = neat_clamp(*w + r * p->weight_perturb_power, p->weight_max);
+        else
+            *w = r * p->weight_init_range;
+    }
+    return NEAT_OK;
+}
+
+/* Is there a path from 'from' to 'to' along the genome's connections? Used to
+ * keep networks feed-forward when recurrence is off. */
+static int neat_reaches(const neat_genome *g, uint32_t from, uint32_t to, uint32_t *stack, uint8_t *seen)
+{
+    uint32_t sp = 0, i, k;
+    memset(seen, 0, g->n_nodes);
+    stack[sp++] = from;
+    while (sp > 0) {
+        uint32_t n = stack[--sp];
+        if (n == to)
+            return 1;
+        for (i = 0; i < g->n_conns; i++) {
+            if (g->conns[i].in != n)
+                continue;
+            k = (uint32_t)(neat_genome_find_node(g, g->conns[i].out) - g->nodes);
+            if (!seen[k]) {
+                seen[k] = 1;
+                stack[sp++] = g->conns[i].out;
+            }
+        }
+    }
+    return 0;
+}
+
+int neat_mutate_add_conn(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs *iv, const neat_alloc *a)
+{
+    uint32_t t, innov, *stack = NULL;
+    uint8_t *seen = NULL;
+    size_t stack_bytes = (size_t)g->n_nodes * sizeof(uint32_t);
+    int err = NEAT_OK;
+
+    if (!p->allow_recurrent) {
+        stack = (uint32_t *)neat_mem_realloc(a, NULL, 0, stack_bytes);
+        seen = (uint8_t *)neat_mem_realloc(a, NULL, 0, g->n_nodes);
+        if (stack == NULL || seen == NULL) {
+            err = NEAT_E_NOMEM;
+            goto cleanup;
+        }
+    }
+    for (t = 0; t < p->add_conn_tries; t++) {
+        const neat_node *src = &g->nodes[neat_rng_below(rng, g->n_nodes)];
+        const neat_node *dst = &g->nodes[neat_rng_below(rng, g->n_nodes)];
+        if (dst->type == NEAT_NODE_BIAS || dst->type == NEAT_NODE_INPUT)
+            continue;
+        if (neat_genome_has_link(g, src->id, dst->id))
+            continue;
+        if (!p->allow_recurrent && (src->id == dst->id || neat_reaches(g, dst->id, src->id, stack, seen)))
+            continue;
+        err = neat_innov_conn(iv, a, src->id, dst->id, &innov);
+        if (!err)
+            err = neat_genome_add_conn(g, src->id, dst->id, (2.0 * neat_rng_uniform(rng) - 1.0) * p->weight_init_range,
+                                       innov, 1, a);
+        break;
+    }
+cleanup:
+    neat_mem_free(a, stack, stack_bytes);
+    neat_mem_free(a, seen, g->n_nodes);
+    return err;
+}
+
+int neat_mutate_add_node(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs *iv, const neat_alloc *a)
+{
+    uint32_t t, k, in, out, node;
+    double w;
+    neat_innov rec;
+    int err;
+
+    if (g->n_nodes >= p->max_nodes || g->n_conns == 0)
+        return NEAT_OK;
+    /* as the C++ release: 20 tries for an enabled gene not leaving the bias */
+    for (t = 0; t < 20; t++) {
+        k = neat_rng_below(rng, g->n_conns);
+        if (g->conns[k].enabled && neat_genome_find_node(g, g->conns[k].in)->type != NEAT_NODE_BIAS)
+            break;
+    }
+    if (t == 20)
+        return NEAT_OK;
+    in = g->conns[k].in;
+    out = g->conns[k].out;
+    w = g->conns[k].weight;
+    err = neat_innov_node(iv, a, in, out, g->conns[k].innov, &rec);
+    if (err)
+        return err;
+    node = rec.node;
+    if (neat_genome_find_node(g, node) != NULL) {
+        /* this genome already has that split's node (from a crossover of the
+         * same generation): a fresh node and genes keep the genome valid */
+        rec.node = node = iv->next_node++;
+        rec.innov = iv->next_innov++;
+        rec.innov2 = iv->next_innov++;
+    }
+    g->conns[k].enabled = 0;
+    err = neat_genome_add_node(g, node, NEAT_NODE_HIDDEN, a);
+    if (!err)
+        err = neat_genome_add_conn(g, in, node, 1.0, rec.innov, 1, a);
+    if (!err)
+        err = neat_genome_add_conn(g, node, out, w, rec.innov2, 1, a);
+    return err;
+}
+
+int neat_mutate_remove_conn(neat_genome *g, neat_rng *rng)
+{
+    uint32_t k, i, id, used;
+    if (g->n_conns == 0)
+        return NEAT_OK;
+    k = neat_rng_below(rng, g->n_conns);
+    memmove(g->conns + k, g->conns + k + 1, (g->n_conns - k - 1) * sizeof(neat_conn));
+    g->n_conns--;
+    /* hidden nodes left without any connection gene go too */
+    for (i = 0; i < g->n_nodes;) {
+        if (g->nodes[i].type == NEAT_NODE_HIDDEN) {
+            id = g->nodes[i].id;
+            used = 0;
+            for (k = 0; k < g->n_conns && !used; k++)
+                used = g->conns[k].in == id || g->conns[k].out == id;
+            if (!used) {
+                memmove(g->nodes + i, g->nodes + i + 1, (g->n_nodes - i - 1) * sizeof(neat_node));
+                g->n_nodes--;
+                continue;
+            }
+        }
+        i++;
+    }
+    return NEAT_OK;
+}
+
+int neat_mutate(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs *iv, const neat_alloc *a)
+{
+    /* As the C++ release: a structural mutation takes the place of the
+     * weight mutation for that offspring (docs/parameters.md). */
+    switch (p->mode) {
+    case NEAT_MODE_COMPLEXIFY:
+        if (neat_rng_uniform(rng) < p->add_node_prob)
+            return neat_mutate_add_node(g, p, rng, iv, a);
+        if (neat_rng_uniform(rng) < p->add_conn_prob)
+            return neat_mutate_add_conn(g, p, rng, iv, a);
+        break;
+    case NEAT_MODE_SIMPLIFY:
+        if (neat_rng_uniform(rng) < p->add_node_prob + p->add_conn_prob)
+            return neat_mutate_remove_conn(g, rng);
+        break;
+    default:
+        break;
+    }
+    if (neat_rng_uniform(rng) < p->weight_mut_prob)
+        return neat_mutate_weights(g, p, rng);
+    return NEAT_OK;
+}

@@ -1,0 +1,121 @@
+/* neat_params.c - the parameter defaults (the paper's Appendix A) and their range checks. */
+#include <math.h>
+
+#include "nrt.h"
+#include "neat_internal.h"
+
+neat_params neat_params_default(void)
+{
+    neat_params p;
+    /* Appendix A of Stanley & Miikkulainen (2004) unless marked; the others
+     * are documented with their source in docs/parameters.md. */
+    p.pop_size = 256;
+    p.n_inputs = 12;            /* the duel's sensors; bias is input 0 */
+    p.n_outputs = 3;
+    p.mode = NEAT_MODE_COMPLEXIFY;
+    p.c1 = 1.0;
+    p.c2 = 1.0;
+    p.c3 = 2.0;
+    p.normalize_by_size = 0;
+    p.delta_t = 3.0;
+    p.delta_t_step = 0.3;
+    p.delta_t_min = 0.3;        /* chosen: a threshold must stay positive */
+    p.target_species = 10;
+    p.survival_fraction = 0.2;  /* C++ release, pole2_markov.ne */
+    p.elitism_min_size = 5;
+    p.dropoff_age = 30;
+    p.pop_stagnation = 35;      /* C++ release: dropoff_age + 5 */
+    p.mutate_only_prob = 0.25;
+    p.mate_only_prob = 0.2;     /* C++ release */
+    p.interspecies_prob = 0.05;
+    p.mate_avg_prob = 0.4;
+    p.disable_prob = 0.75;
+    p.excess_equal_prob = 0.5;  /* "from both parents randomly" */
+    p.weight_mut_prob = 0.8;
+    p.weight_perturb_prob = 0.9;
+    p.weight_perturb_power = 2.5; /* C++ release, pole2_markov.ne */
+    p.weight_init_range = 1.0;  /* C++ release: new links uniform in [-1, 1] */
+    p.weight_max = 8.0;         /* C++ release cap; also the blob's Q3.12 range */
+    p.add_conn_prob = 0.1;
+    p.add_node_prob = 0.01;
+    p.add_conn_tries = 20;      /* C++ release newlink_tries */
+    p.allow_recurrent = 1;
+    p.max_nodes = NRT_MAX_NODES;
+    return p;
+}
+
+static int neat_prob_ok(double x)
+{
+    return x >= 0.0 && x <= 1.0;
+}
+
+int neat_params_check(const neat_params *p, const char **field)
+{
+    const char *bad = NULL;
+    if (p == NULL)
+        return NEAT_E_ARG;
+    if (p->pop_size < 2 || p->pop_size > 1000000)
+        bad = "pop_size";
+    else if (p->n_outputs < 1 || p->n_inputs + p->n_outputs + 1 > NRT_MAX_NODES)
+        bad = "n_inputs/n_outputs";
+    else if (p->mode < NEAT_MODE_COMPLEXIFY || p->mode > NEAT_MODE_SIMPLIFY)
+        bad = "mode";
+    else if (!(p->c1 >= 0) || !(p->c2 >= 0) || !(p->c3 >= 0) || !isfinite(p->c1 + p->c2 + p->c3))
+        bad = "c1/c2/c3";
+    else if (!(p->delta_t > 0) || !isfinite(p->delta_t))
+        bad = "delta_t";
+    else if (!(p->delta_t_step >= 0) || !isfinite(p->delta_t_step))
+        bad = "delta_t_step";
+    else if (!(p->delta_t_min > 0) || !isfinite(p->delta_t_min))
+        bad = "delta_t_min";
+    else if (!(p->survival_fraction > 0) || p->survival_fraction > 1)
+        bad = "survival_fraction";
+    else if (!neat_prob_ok(p->mutate_only_prob))
+        bad = "mutate_only_prob";
+    else if (!neat_prob_ok(p->mate_only_prob))
+        bad = "mate_only_prob";
+    else if (!neat_prob_ok(p->interspecies_prob))
+        bad = "interspecies_prob";
+    else if (!neat_prob_ok(p->mate_avg_prob))
+        bad = "mate_avg_prob";
+    else if (!neat_prob_ok(p->disable_prob))
+        bad = "disable_prob";
+    else if (!neat_prob_ok(p->excess_equal_prob))
+        bad = "excess_equal_prob";
+    else if (!neat_prob_ok(p->weight_mut_prob))
+        bad = "weight_mut_prob";
+    else if (!neat_prob_ok(p->weight_perturb_prob))
+        bad = "weight_perturb_prob";
+    else if (!(p->weight_perturb_power >= 0) || !isfinite(p->weight_perturb_power))
+        bad = "weight_perturb_power";
+    else if (!(p->weight_max > 0) || p->weight_max > 8.0)
+        bad = "weight_max";
+    else if (!(p->weight_init_range >= 0) || p->weight_init_range > p->weight_max)
+        bad = "weight_init_range";
+    else if (!neat_prob_ok(p->add_conn_prob))
+        bad = "add_conn_prob";
+    else if (!neat_prob_ok(p->add_node_prob) || p->add_node_prob + p->add_conn_prob > 1.0)
+        bad = "add_node_prob";
+    else if (p->max_nodes < p->n_inputs + p->n_outputs + 1 || p->max_nodes > NRT_MAX_NODES)
+        bad = "max_nodes";
+    if (field != NULL)
+        *field = bad;
+    return bad == NULL ? NEAT_OK : NEAT_E_PARAM;
+}
+
+const char *neat_strerror(int err)
+{
+    switch (err) {
+    case NEAT_OK: return "ok";
+    case NEAT_E_ARG: return "invalid argument";
+    case NEAT_E_NOMEM: return "out of memory";
+    case NEAT_E_PARAM: return "parameter out of range";
+    case NEAT_E_FITNESS: return "fitness missing, negative, NaN or infinite";
+    case NEAT_E_TOOBIG: return "network too large for the blob format";
+    case NEAT_E_FORMAT: return "malformed checkpoint";
+    case NEAT_E_CRC: return "checkpoint checksum mismatch";
+    case NEAT_E_TRUNCATED: return "checkpoint truncated";
+    case NEAT_E_STATE: return "call out of order";
+    default: return "unknown error";
+    }
+}

@@ -1,0 +1,251 @@
+/* neat_pop.c - the population: creation, the batch evaluation interface, and one generation (epoch). */
+#include <math.h>
+#include <string.h>
+
+#include "neat_internal.h"
+
+static void neat_genomes_free(neat_genome *gs, uint32_t n, const neat_alloc *a)
+{
+    uint32_t i;
+    if (gs == NULL)
+        return;
+    for (i = 0; i < n; i++)
+        neat_genome_free(&gs[i], a);
+    neat_mem_free(a, gs, (size_t)n * sizeof(neat_genome));
+}
+
+static neat_genome *neat_genomes_new(uint32_t n, const neat_alloc *a)
+{
+    uint32_t i;
+    neat_genome *gs = (neat_genome *)neat_mem_realloc(a, NULL, 0, (size_t)n * sizeof(neat_genome));
+    if (gs != NULL)
+        for (i = 0; i < n; i++)
+            neat_genome_init(&gs[i]);
+    return gs;
+}
+
+int neat_pop_alloc(neat_pop **out, const neat_params *p, const neat_alloc *alloc)
+{
+    neat_alloc a;
+    neat_pop *pop;
+    a.fn = alloc ? alloc->fn : NULL;
+    a.ud = alloc ? alloc->ud : NULL;
+    pop = (neat_pop *)neat_mem_realloc(&a, NULL, 0, sizeof *pop);
+    if (pop == NULL)
+        return NEAT_E_NOMEM;
+    memset(pop, 0, sizeof *pop);
+    pop->p = *p;
+    pop->a = a;
+    neat_genome_init(&pop->best_ever);
+    neat_genome_init(&pop->last_best);
+    pop->genomes = neat_genomes_new(p->pop_size, &a);
+    if (pop->genomes == NULL) {
+        neat_mem_free(&a, pop, sizeof *pop);
+        return NEAT_E_NOMEM;
+    }
+    *out = pop;
+    return NEAT_OK;
+}
+
+int neat_pop_create(neat_pop **out, const neat_params *p, const neat_start *start, uint64_t seed,
+                    const neat_alloc *alloc)
+{
+    neat_pop *pop = NULL;
+    neat_genome minimal;
+    const neat_genome *g0;
+    uint32_t i;
+    int err;
+
+    if (out == NULL || p == NULL)
+        return NEAT_E_ARG;
+    *out = NULL;
+    if (neat_params_check(p, NULL) != NEAT_OK)
+        return NEAT_E_PARAM;
+    err = neat_pop_alloc(&pop, p, alloc);
+    if (err)
+        return err;
+    neat_rng_seed(&pop->rng, seed);
+    neat_genome_init(&minimal);
+    if (start != NULL && start->genome != NULL) {
+        g0 = start->genome;
+    } else {
+        err = neat_genome_minimal(&minimal, p->n_inputs, p->n_outputs, &pop->a);
+        g0 = &minimal;
+    }
+    if (!err && (g0->n_nodes > p->max_nodes || g0->n_nodes < p->n_inputs + p->n_outputs + 1))
+        err = NEAT_E_ARG;
+    if (!err) {
+        /* the start's markings are the population's first */
+        for (i = 0; i < g0->n_nodes; i++)
+            if (g0->nodes[i].id >= pop->iv.next_node)
+                pop->iv.next_node = g0->nodes[i].id + 1;
+        for (i = 0; i < g0->n_conns; i++)
+            if (g0->conns[i].innov >= pop->iv.next_innov)
+                pop->iv.next_innov = g0->conns[i].innov + 1;
+    }
+    for (i = 0; !err && i < p->pop_size; i++) {
+        err = neat_genome_copy(&pop->genomes[i], g0, &pop->a);
+        if (!err && !(start != NULL && start->keep_weights))
+            neat_genome_randomize(&pop->genomes[i], &pop->rng, p->weight_init_range);
+        pop->genomes[i].has_fitness = 0;
+    }
+    neat_genome_free(&minimal, &pop->a);
+    pop->delta_t = p->delta_t;
+    if (!err)
+        err = neat_speciate(pop);
+    if (err) {
+        neat_pop_free(pop);
+        return err;
+    }
+    *out = pop;
+    return NEAT_OK;
+}
+
+void neat_pop_free(neat_pop *pop)
+{
+    neat_alloc a;
+    uint32_t k;
+    if (pop == NULL)
+        return;
+    a = pop->a;
+    neat_genomes_free(pop->genomes, pop->p.pop_size, &a);
+    for (k = 0; k < pop->n_species; k++)
+        neat_species_free(&pop->species[k], &a);
+    neat_mem_free(&a, pop->species, (size_t)pop->cap_species * sizeof(neat_species));
+    neat_mem_free(&a, pop->iv.list, (size_t)pop->iv.cap * sizeof(neat_innov));
+    neat_genome_free(&pop->best_ever, &a);
+    neat_genome_free(&pop->last_best, &a);
+    neat_mem_free(&a, pop, sizeof *pop);
+}
+
+uint32_t neat_pop_size(const neat_pop *pop)
+{
+    return pop->p.pop_size;
+}
+
+uint32_t neat_pop_generation(const neat_pop *pop)
+{
+    return pop->generation;
+}
+
+const neat_params *neat_pop_params(const neat_pop *pop)
+{
+    return &pop->p;
+}
+
+const neat_genome *neat_pop_genome(const neat_pop *pop, uint32_t i)
+{
+    return i < pop->p.pop_size ? &pop->genomes[i] : NULL;
+}
+
+int neat_pop_set_fitness(neat_pop *pop, uint32_t i, double fitness)
+{
+    if (pop == NULL || i >= pop->p.pop_size)
+        return NEAT_E_ARG;
+    if (!isfinite(fitness) || fitness < 0.0) {
+        pop->err_index = i;
+        pop->genomes[i].has_fitness = 0;
+        return NEAT_E_FITNESS;
+    }
+    pop->genomes[i].fitness = fitness;
+    pop->genomes[i].has_fitness = 1;
+    return NEAT_OK;
+}
+
+uint32_t neat_pop_error_index(const neat_pop *pop)
+{
+    return pop->err_index;
+}
+
+int neat_pop_epoch(neat_pop *pop)
+{
+    uint32_t i, k, best = 0;
+    neat_genome *next;
+    int err;
+
+    if (pop == NULL)
+        return NEAT_E_ARG;
+    for (i = 0; i < pop->p.pop_size; i++) {
+        if (!pop->genomes[i].has_fitness) {
+            pop->err_index = i;
+            return NEAT_E_FITNESS;
+        }
+        if (pop->genomes[i].fitness > pop->genomes[best].fitness)
+            best = i;
+    }
+    neat_species_rank(pop);
+    err = neat_genome_copy(&pop->last_best, &pop->genomes[best], &pop->a);
+    if (err)
+        return err;
+    if (!pop->have_best || pop->genomes[best].fitness > pop->best_ever.fitness) {
+        err = neat_genome_copy(&pop->best_ever, &pop->genomes[best], &pop->a);
+        if (err)
+            return err;
+        pop->have_best = 1;
+        pop->since_pop_improved = 0;
+    } else {
+        pop->since_pop_improved++;
+    }
+    neat_apportion(pop);
+    /* next generation's representatives: random members of this one */
+    for (k = 0; k < pop->n_species; k++) {
+        neat_species *s = &pop->species[k];
+        err = neat_genome_copy(&s->rep, &pop->genomes[s->members[neat_rng_below(&pop->rng, s->n_members)]], &pop->a);
+        if (err)
+            return err;
+    }
+    next = neat_genomes_new(pop->p.pop_size, &pop->a);
+    if (next == NULL)
+        return NEAT_E_NOMEM;
+    neat_innov_reset(&pop->iv);
+    err = neat_reproduce(pop, next);
+    if (err) {
+        neat_genomes_free(next, pop->p.pop_size, &pop->a);
+        return err;
+    }
+    neat_genomes_free(pop->genomes, pop->p.pop_size, &pop->a);
+    pop->genomes = next;
+    for (k = 0; k < pop->n_species; k++)
+        pop->species[k].age++;
+    pop->generation++;
+    return neat_speciate(pop);
+}
+
+const neat_genome *neat_pop_last_best(const neat_pop *pop)
+{
+    return pop->have_best ? &pop->last_best : NULL;
+}
+
+const neat_genome *neat_pop_best_ever(const neat_pop *pop)
+{
+    return pop->have_best ? &pop->best_ever : NULL;
+}
+
+uint32_t neat_pop_species_count(const neat_pop *pop)
+{
+    return pop->n_species;
+}
+
+int neat_pop_species(const neat_pop *pop, uint32_t k, neat_species_info *info)
+{
+    const neat_species *s;
+    if (pop == NULL || info == NULL || k >= pop->n_species)
+        return NEAT_E_ARG;
+    s = &pop->species[k];
+    info->id = s->id;
+    info->size = s->n_members;
+    info->age = s->age;
+    info->since_improved = s->since_improved;
+    info->best_fitness = s->best_fitness;
+    return NEAT_OK;
+}
+
+double neat_pop_delta_t(const neat_pop *pop)
+{
+    return pop->delta_t;
+}
+
+uint32_t neat_pop_innovations(const neat_pop *pop)
+{
+    return pop->iv.next_innov;
+}

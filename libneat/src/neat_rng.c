@@ -1,0 +1,63 @@
+/* neat_rng.c - libneat's own PRNG (xoshiro256**, splitmix64 seeding) and per-game seed derivation. */
+#include "neat.h"
+
+static uint64_t neat_splitmix64(uint64_t *x)
+{
+    uint64_t z = (*x += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+static uint64_t neat_rotl(uint64_t x, int k)
+{
+    return (x << k) | (x >> (64 - k));
+}
+
+void neat_rng_seed(neat_rng *rng, uint64_t seed)
+{
+    int i;
+    for (i = 0; i < 4; i++)
+        rng->s[i] = neat_splitmix64(&seed);
+}
+
+uint64_t neat_rng_next(neat_rng *rng)
+{
+    uint64_t *s = rng->s;
+    uint64_t r = neat_rotl(s[1] * 5, 7) * 9;
+    uint64_t t = s[1] << 17;
+    s[2] ^= s[0];
+    s[3] ^= s[1];
+    s[1] ^= s[2];
+    s[0] ^= s[3];
+    s[2] ^= t;
+    s[3] = neat_rotl(s[3], 45);
+    return r;
+}
+
+double neat_rng_uniform(neat_rng *rng)
+{
+    return (double)(neat_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+uint32_t neat_rng_below(neat_rng *rng, uint32_t n)
+{
+    /* reject the top partial block so every value is equally likely */
+    uint64_t limit = UINT64_MAX - (UINT64_MAX % n), x;
+    do
+        x = neat_rng_next(rng);
+    while (x >= limit);
+    return (uint32_t)(x % n);
+}
+
+uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys)
+{
+    uint64_t h = base, st;
+    size_t i;
+    for (i = 0; i < n_keys; i++) {
+        st = h ^ keys[i];
+        h = neat_splitmix64(&st) + (uint64_t)i;
+    }
+    st = h;
+    return neat_splitmix64(&st);
+}

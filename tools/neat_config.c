@@ -1,0 +1,179 @@
+/* neat_config.c - INI keys of the [neat] section: one table naming every libneat parameter, its type and range. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "neat_config.h"
+
+#define NEAT_KEY(name, type, lo, hi) {#name, type, offsetof(neat_params, name), lo, hi}
+
+static const neat_cfg_key neat_keys[] = {
+    NEAT_KEY(pop_size, NEAT_CFG_U32, 2, 1000000),
+    NEAT_KEY(n_inputs, NEAT_CFG_U32, 0, 254),
+    NEAT_KEY(n_outputs, NEAT_CFG_U32, 1, 255),
+    NEAT_KEY(mode, NEAT_CFG_MODE, 0, 2),
+    NEAT_KEY(c1, NEAT_CFG_F64, 0, 1e9),
+    NEAT_KEY(c2, NEAT_CFG_F64, 0, 1e9),
+    NEAT_KEY(c3, NEAT_CFG_F64, 0, 1e9),
+    NEAT_KEY(normalize_by_size, NEAT_CFG_BOOL, 0, 1),
+    NEAT_KEY(delta_t, NEAT_CFG_F64, 1e-9, 1e9),
+    NEAT_KEY(delta_t_step, NEAT_CFG_F64, 0, 1e9),
+    NEAT_KEY(delta_t_min, NEAT_CFG_F64, 1e-9, 1e9),
+    NEAT_KEY(target_species, NEAT_CFG_U32, 0, 1000000),
+    NEAT_KEY(survival_fraction, NEAT_CFG_F64, 1e-9, 1),
+    NEAT_KEY(elitism_min_size, NEAT_CFG_U32, 0, 1000000),
+    NEAT_KEY(dropoff_age, NEAT_CFG_U32, 0, 1000000000),
+    NEAT_KEY(pop_stagnation, NEAT_CFG_U32, 0, 1000000000),
+    NEAT_KEY(mutate_only_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(mate_only_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(interspecies_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(mate_avg_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(disable_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(excess_equal_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(weight_mut_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(weight_perturb_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(weight_perturb_power, NEAT_CFG_F64, 0, 1e3),
+    NEAT_KEY(weight_init_range, NEAT_CFG_F64, 0, 8),
+    NEAT_KEY(weight_max, NEAT_CFG_F64, 1e-9, 8),
+    NEAT_KEY(add_conn_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(add_node_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_KEY(add_conn_tries, NEAT_CFG_U32, 0, 1000000),
+    NEAT_KEY(allow_recurrent, NEAT_CFG_BOOL, 0, 1),
+    NEAT_KEY(max_nodes, NEAT_CFG_U32, 2, 256),
+};
+#define NEAT_N_KEYS (sizeof neat_keys / sizeof neat_keys[0])
+
+static const char *const neat_mode_names[] = {"complexify", "fixed", "simplify"};
+
+static size_t neat_edit_distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b), i, j, row[64], prev, tmp;
+    if (lb >= 64)
+        return (size_t)-1;
+    for (j = 0; j <= lb; j++)
+        row[j] = j;
+    for (i = 1; i <= la; i++) {
+        prev = row[0];
+        row[0] = i;
+        for (j = 1; j <= lb; j++) {
+            size_t best = prev + (a[i - 1] != b[j - 1]);
+            if (row[j] + 1 < best)
+                best = row[j] + 1;
+            if (row[j - 1] + 1 < best)
+                best = row[j - 1] + 1;
+            tmp = row[j];
+            row[j] = best;
+            prev = tmp;
+        }
+    }
+    return row[lb];
+}
+
+const char *neat_config_suggest(const char *name, const char *const *known, size_t n_known)
+{
+    size_t i, best_d = (size_t)-1;
+    const char *best = NULL;
+    for (i = 0; i < n_known; i++) {
+        size_t d = neat_edit_distance(name, known[i]);
+        if (d < best_d) {
+            best_d = d;
+            best = known[i];
+        }
+    }
+    /* only a plausible typo is worth suggesting */
+    return best_d <= 1 + strlen(name) / 3 ? best : NULL;
+}
+
+int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value, char *err, size_t err_len)
+{
+    char *end = NULL;
+    double d;
+    void *field = (char *)base + k->offset;
+    if (k->type == NEAT_CFG_MODE) {
+        int m;
+        for (m = 0; m < 3; m++)
+            if (strcmp(value, neat_mode_names[m]) == 0) {
+                *(int *)field = m;
+                return 0;
+            }
+        snprintf(err, err_len, "bad value '%s' for %s: expected complexify, fixed or simplify", value, k->name);
+        return -1;
+    }
+    if (k->type == NEAT_CFG_BOOL) {
+        if (strcmp(value, "1") == 0 || strcmp(value, "true") == 0 || strcmp(value, "yes") == 0) {
+            *(int *)field = 1;
+            return 0;
+        }
+        if (strcmp(value, "0") == 0 || strcmp(value, "false") == 0 || strcmp(value, "no") == 0) {
+            *(int *)field = 0;
+            return 0;
+        }
+        snprintf(err, err_len, "bad value '%s' for %s: expected true or false", value, k->name);
+        return -1;
+    }
+    errno = 0;
+    d = strtod(value, &end);
+    if (end == value || *end != '\0' || errno != 0 || !isfinite(d) || d < k->min || d > k->max ||
+        (k->type == NEAT_CFG_U32 && d != floor(d))) {
+        snprintf(err, err_len, "bad value '%s' for %s: expected %s in [%g, %g]", value, k->name,
+                 k->type == NEAT_CFG_U32 ? "an integer" : "a number", k->min, k->max);
+        return -1;
+    }
+    if (k->type == NEAT_CFG_U32)
+        *(uint32_t *)field = (uint32_t)d;
+    else
+        *(double *)field = d;
+    return 0;
+}
+
+int neat_config_set_in(const neat_cfg_key *keys, size_t n_keys, void *base, const char *key, const char *value,
+                       char *err, size_t err_len)
+{
+    size_t i;
+    const char *names[128], *hint;
+    for (i = 0; i < n_keys; i++)
+        if (strcmp(keys[i].name, key) == 0)
+            return neat_config_parse_value(&keys[i], base, value, err, err_len);
+    for (i = 0; i < n_keys && i < 128; i++)
+        names[i] = keys[i].name;
+    hint = neat_config_suggest(key, names, i);
+    if (hint != NULL)
+        snprintf(err, err_len, "unknown key '%s' (did you mean '%s'?)", key, hint);
+    else
+        snprintf(err, err_len, "unknown key '%s'", key);
+    return -1;
+}
+
+int neat_config_set(neat_params *p, const char *key, const char *value, char *err, size_t err_len)
+{
+    return neat_config_set_in(neat_keys, NEAT_N_KEYS, p, key, value, err, err_len);
+}
+
+void neat_config_dump_keys(FILE *out, const neat_cfg_key *keys, size_t n_keys, const void *base)
+{
+    size_t i;
+    for (i = 0; i < n_keys; i++) {
+        const void *field = (const char *)base + keys[i].offset;
+        switch (keys[i].type) {
+        case NEAT_CFG_U32:
+            fprintf(out, "%s = %u\n", keys[i].name, (unsigned)*(const uint32_t *)field);
+            break;
+        case NEAT_CFG_F64:
+            /* 17 significant digits: reads back to the same double */
+            fprintf(out, "%s = %.17g\n", keys[i].name, *(const double *)field);
+            break;
+        case NEAT_CFG_BOOL:
+            fprintf(out, "%s = %s\n", keys[i].name, *(const int *)field ? "true" : "false");
+            break;
+        case NEAT_CFG_MODE:
+            fprintf(out, "%s = %s\n", keys[i].name, neat_mode_names[*(const int *)field]);
+            break;
+        }
+    }
+}
+
+void neat_config_dump(FILE *out, const neat_params *p)
+{
+    neat_config_dump_keys(out, neat_keys, NEAT_N_KEYS, p);
+}

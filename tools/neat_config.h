@@ -1,0 +1,36 @@
+/* neat_config.h - INI configuration of libneat parameters for the command-line tools (parsed by inih). */
+#ifndef NEAT_CONFIG_H
+#define NEAT_CONFIG_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "neat.h"
+
+/* Sets one [neat] key from its text. Returns 0, or -1 with a message in err
+ * (unknown key with a "did you mean", or a bad value). */
+int neat_config_set(neat_params *p, const char *key, const char *value, char *err, size_t err_len);
+
+/* Writes every [neat] key as "key = value" lines that load back unchanged. */
+void neat_config_dump(FILE *out, const neat_params *p);
+
+/* The known key closest to name (edit distance), for "did you mean". */
+const char *neat_config_suggest(const char *name, const char *const *known, size_t n_known);
+
+/* A tool-specific key table entry, for settings beyond libneat's. */
+typedef enum { NEAT_CFG_U32, NEAT_CFG_F64, NEAT_CFG_BOOL, NEAT_CFG_MODE } neat_cfg_type;
+typedef struct neat_cfg_key {
+    const char *name;
+    neat_cfg_type type;
+    size_t offset;
+    double min, max;
+} neat_cfg_key;
+
+/* Parses value into the field of base described by k; -1 with err on a bad value. */
+int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value, char *err, size_t err_len);
+/* Sets key from a table; -1 with a "did you mean" in err if unknown. */
+int neat_config_set_in(const neat_cfg_key *keys, size_t n_keys, void *base, const char *key, const char *value,
+                       char *err, size_t err_len);
+void neat_config_dump_keys(FILE *out, const neat_cfg_key *keys, size_t n_keys, const void *base);
+
+#endif /* NEAT_CONFIG_H */

@@ -1,0 +1,61 @@
+/* neat_phenotype.c - genome -> blob -> runtime: what evolution evaluates is exactly what would be flashed. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "neat_phenotype.h"
+
+void neat_phenotype_init(neat_phenotype *ph)
+{
+    memset(ph, 0, sizeof *ph);
+}
+
+void neat_phenotype_free(neat_phenotype *ph)
+{
+    free(ph->blob);
+    free(ph->mem);
+    neat_phenotype_init(ph);
+}
+
+int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_params *p)
+{
+    size_t need = neat_blob_size(g), mem_need;
+    int err;
+    if (need > ph->blob_cap) {
+        uint8_t *nb = (uint8_t *)realloc(ph->blob, need);
+        if (nb == NULL)
+            return NEAT_E_NOMEM;
+        ph->blob = nb;
+        ph->blob_cap = need;
+    }
+    err = neat_blob_write(g, p->n_inputs, p->n_outputs, ph->blob, ph->blob_cap, &ph->blob_len);
+    if (err)
+        return err;
+    err = nrt_mem_required(ph->blob, ph->blob_len, &mem_need);
+    if (err)
+        return err - 100;
+    if (mem_need > ph->mem_cap) {
+        void *nm = realloc(ph->mem, mem_need);
+        if (nm == NULL)
+            return NEAT_E_NOMEM;
+        ph->mem = nm;
+        ph->mem_cap = mem_need;
+    }
+    err = nrt_load(&ph->net, ph->blob, ph->blob_len, ph->mem, ph->mem_cap);
+    return err ? err - 100 : 0;
+}
+
+nrt_q15 neat_q15(double x)
+{
+    double q = floor(x * 32768.0 + 0.5);
+    if (q > 32767.0)
+        q = 32767.0;
+    if (q < -32768.0)
+        q = -32768.0;
+    return (nrt_q15)q;
+}
+
+double neat_from_q15(nrt_q15 q)
+{
+    return (double)q / 32768.0;
+}
