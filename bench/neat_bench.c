@@ -17,7 +17,7 @@
 #define NEAT_BENCH_DIR "bench"
 #endif
 
-#define BENCH_KEY(name, type, lo, hi) {#name, type, offsetof(bench_cfg, name), lo, hi}
+#define BENCH_KEY(name, type, lo, hi) {#name, type, offsetof(bench_cfg, name), lo, hi, NULL}
 static const neat_cfg_key bench_keys[] = {
     BENCH_KEY(runs, NEAT_CFG_U32, 1, 100000),
     BENCH_KEY(max_generations, NEAT_CFG_U32, 1, 100000000),

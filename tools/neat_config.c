@@ -6,13 +6,17 @@
 
 #include "neat_config.h"
 
-#define NEAT_KEY(name, type, lo, hi) {#name, type, offsetof(neat_params, name), lo, hi}
+#define NEAT_KEY(name, type, lo, hi) {#name, type, offsetof(neat_params, name), lo, hi, NULL}
+#define NEAT_ENUM(name, names, n) {#name, NEAT_CFG_ENUM, offsetof(neat_params, name), 0, (n) - 1, names}
+
+static const char *const neat_mode_names[] = {"complexify", "fixed", "simplify"};
+static const char *const neat_stagnation_names[] = {"oldest-worst", "improvement"};
 
 static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(pop_size, NEAT_CFG_U32, 2, 1000000),
     NEAT_KEY(n_inputs, NEAT_CFG_U32, 0, 254),
     NEAT_KEY(n_outputs, NEAT_CFG_U32, 1, 255),
-    NEAT_KEY(mode, NEAT_CFG_MODE, 0, 2),
+    NEAT_ENUM(mode, neat_mode_names, 3),
     NEAT_KEY(c1, NEAT_CFG_F64, 0, 1e9),
     NEAT_KEY(c2, NEAT_CFG_F64, 0, 1e9),
     NEAT_KEY(c3, NEAT_CFG_F64, 0, 1e9),
@@ -23,7 +27,9 @@ static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(target_species, NEAT_CFG_U32, 0, 1000000),
     NEAT_KEY(survival_fraction, NEAT_CFG_F64, 1e-9, 1),
     NEAT_KEY(elitism_min_size, NEAT_CFG_U32, 0, 1000000),
+    NEAT_ENUM(stagnation_rule, neat_stagnation_names, 2),
     NEAT_KEY(dropoff_age, NEAT_CFG_U32, 0, 1000000000),
+    NEAT_KEY(stagnation_factor, NEAT_CFG_F64, 0, 1),
     NEAT_KEY(pop_stagnation, NEAT_CFG_U32, 0, 1000000000),
     NEAT_KEY(mutate_only_prob, NEAT_CFG_F64, 0, 1),
     NEAT_KEY(mate_only_prob, NEAT_CFG_F64, 0, 1),
@@ -43,8 +49,6 @@ static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(max_nodes, NEAT_CFG_U32, 2, 256),
 };
 #define NEAT_N_KEYS (sizeof neat_keys / sizeof neat_keys[0])
-
-static const char *const neat_mode_names[] = {"complexify", "fixed", "simplify"};
 
 static size_t neat_edit_distance(const char *a, const char *b)
 {
@@ -90,14 +94,19 @@ int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value
     char *end = NULL;
     double d;
     void *field = (char *)base + k->offset;
-    if (k->type == NEAT_CFG_MODE) {
-        int m;
-        for (m = 0; m < 3; m++)
-            if (strcmp(value, neat_mode_names[m]) == 0) {
+    if (k->type == NEAT_CFG_ENUM) {
+        int m, n = (int)k->max + 1;
+        char expect[200] = "";
+        for (m = 0; m < n; m++)
+            if (strcmp(value, k->names[m]) == 0) {
                 *(int *)field = m;
                 return 0;
             }
-        snprintf(err, err_len, "bad value '%s' for %s: expected complexify, fixed or simplify", value, k->name);
+        for (m = 0; m < n; m++) {
+            strncat(expect, m ? ", " : "", sizeof expect - strlen(expect) - 1);
+            strncat(expect, k->names[m], sizeof expect - strlen(expect) - 1);
+        }
+        snprintf(err, err_len, "bad value '%s' for %s: expected one of %s", value, k->name, expect);
         return -1;
     }
     if (k->type == NEAT_CFG_BOOL) {
@@ -166,8 +175,8 @@ void neat_config_dump_keys(FILE *out, const neat_cfg_key *keys, size_t n_keys, c
         case NEAT_CFG_BOOL:
             fprintf(out, "%s = %s\n", keys[i].name, *(const int *)field ? "true" : "false");
             break;
-        case NEAT_CFG_MODE:
-            fprintf(out, "%s = %s\n", keys[i].name, neat_mode_names[*(const int *)field]);
+        case NEAT_CFG_ENUM:
+            fprintf(out, "%s = %s\n", keys[i].name, keys[i].names[*(const int *)field]);
             break;
         }
     }

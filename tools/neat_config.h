@@ -18,12 +18,13 @@ void neat_config_dump(FILE *out, const neat_params *p);
 const char *neat_config_suggest(const char *name, const char *const *known, size_t n_known);
 
 /* A tool-specific key table entry, for settings beyond libneat's. */
-typedef enum { NEAT_CFG_U32, NEAT_CFG_F64, NEAT_CFG_BOOL, NEAT_CFG_MODE } neat_cfg_type;
+typedef enum { NEAT_CFG_U32, NEAT_CFG_F64, NEAT_CFG_BOOL, NEAT_CFG_ENUM } neat_cfg_type;
 typedef struct neat_cfg_key {
     const char *name;
     neat_cfg_type type;
     size_t offset;
     double min, max;
+    const char *const *names; /* NEAT_CFG_ENUM: the value names, index = stored int */
 } neat_cfg_key;
 
 /* Parses value into the field of base described by k; -1 with err on a bad value. */

@@ -77,6 +77,16 @@ enum neat_mode {
     NEAT_MODE_SIMPLIFY = 2    /* structural mutation removes connections */
 };
 
+enum neat_stagnation {
+    /* 2004 paper, Appendix A: the lowest performing species older than
+     * dropoff_age generations gets no offspring */
+    NEAT_STAGNATION_OLDEST_WORST = 0,
+    /* 2002 paper: a species whose best fitness has not improved for
+     * dropoff_age generations breeds no more (stagnation_factor 0; the C++
+     * release multiplies its share by 0.01 instead) */
+    NEAT_STAGNATION_IMPROVEMENT = 1
+};
+
 typedef struct neat_params {
     uint32_t pop_size;          /* 256 (Appendix A) */
     uint32_t n_inputs;          /* sensors, not counting the bias */
@@ -92,7 +102,9 @@ typedef struct neat_params {
     /* reproduction */
     double survival_fraction;   /* fraction of each species (best first) allowed to mate */
     uint32_t elitism_min_size;  /* champion copied when the species has more than this: 5 */
-    uint32_t dropoff_age;       /* species older than this may be cut: 30 */
+    int stagnation_rule;        /* enum neat_stagnation: which species stop breeding */
+    uint32_t dropoff_age;       /* 30: the age (or generations without improvement) that counts as stagnant */
+    double stagnation_factor;   /* NEAT_STAGNATION_IMPROVEMENT: stagnant species' share times this (0 = none) */
     uint32_t pop_stagnation;    /* generations without a new population best before only the 2 best species breed; 0 = never */
     double mutate_only_prob;    /* 0.25 */
     double mate_only_prob;      /* offspring of crossover left unmutated */

@@ -150,7 +150,9 @@ static void neat_put_params(neat_wbuf *w, const neat_params *p)
     neat_put_u32(w, p->target_species);
     neat_put_f64(w, p->survival_fraction);
     neat_put_u32(w, p->elitism_min_size);
+    neat_put_u32(w, (uint32_t)p->stagnation_rule);
     neat_put_u32(w, p->dropoff_age);
+    neat_put_f64(w, p->stagnation_factor);
     neat_put_u32(w, p->pop_stagnation);
     neat_put_f64(w, p->mutate_only_prob);
     neat_put_f64(w, p->mate_only_prob);
@@ -186,7 +188,9 @@ static void neat_get_params(neat_rbuf *r, neat_params *p)
     p->target_species = neat_get_u32(r);
     p->survival_fraction = neat_get_f64(r);
     p->elitism_min_size = neat_get_u32(r);
+    p->stagnation_rule = (int)neat_get_u32(r);
     p->dropoff_age = neat_get_u32(r);
+    p->stagnation_factor = neat_get_f64(r);
     p->pop_stagnation = neat_get_u32(r);
     p->mutate_only_prob = neat_get_f64(r);
     p->mate_only_prob = neat_get_f64(r);

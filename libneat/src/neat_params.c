@@ -23,7 +23,9 @@ neat_params neat_params_default(void)
     p.target_species = 10;
     p.survival_fraction = 0.2;  /* C++ release, pole2_markov.ne */
     p.elitism_min_size = 5;
+    p.stagnation_rule = NEAT_STAGNATION_OLDEST_WORST;
     p.dropoff_age = 30;
+    p.stagnation_factor = 0.0;
     p.pop_stagnation = 35;      /* C++ release: dropoff_age + 5 */
     p.mutate_only_prob = 0.25;
     p.mate_only_prob = 0.2;     /* C++ release */
@@ -70,6 +72,10 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "delta_t_min";
     else if (!(p->survival_fraction > 0) || p->survival_fraction > 1)
         bad = "survival_fraction";
+    else if (p->stagnation_rule < NEAT_STAGNATION_OLDEST_WORST || p->stagnation_rule > NEAT_STAGNATION_IMPROVEMENT)
+        bad = "stagnation_rule";
+    else if (!neat_prob_ok(p->stagnation_factor))
+        bad = "stagnation_factor";
     else if (!neat_prob_ok(p->mutate_only_prob))
         bad = "mutate_only_prob";
     else if (!neat_prob_ok(p->mate_only_prob))

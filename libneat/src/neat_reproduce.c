@@ -40,6 +40,19 @@ static void neat_mark_eligible(neat_pop *pop)
             pop->species[k].eligible = k == top0 || k == top1;
         pop->since_pop_improved = 0;
     }
+    if (pop->p.stagnation_rule == NEAT_STAGNATION_IMPROVEMENT) {
+        /* 2002 paper: a species not improved for dropoff_age generations
+         * stops breeding (or, factor > 0, breeds at that fraction, as the
+         * C++ release); the species holding the best genome never does. */
+        for (k = 0; k < pop->n_species; k++)
+            if (pop->species[k].eligible && k != top0 && pop->species[k].since_improved >= pop->p.dropoff_age) {
+                if (pop->p.stagnation_factor > 0)
+                    pop->species[k].adj_sum *= pop->p.stagnation_factor;
+                else
+                    pop->species[k].eligible = 0;
+            }
+        return;
+    }
     /* Appendix A: the lowest performing species older than dropoff_age gets
      * no offspring, unless it holds the generation's best or is the last. */
     for (k = 0; k < pop->n_species; k++) {

@@ -1,0 +1,17 @@
+# Toolchain for bare-metal Arm Cortex-M (Debian gcc-arm-none-eabi + libnewlib-arm-none-eabi).
+# Pick the core with -DNEAT_ARM_CPU=cortex-m0plus|cortex-m3|cortex-m4 (default cortex-m0plus).
+set(CMAKE_SYSTEM_NAME Generic)
+set(CMAKE_SYSTEM_PROCESSOR arm)
+set(CMAKE_C_COMPILER arm-none-eabi-gcc)
+set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
+if(NOT NEAT_ARM_CPU)
+  set(NEAT_ARM_CPU cortex-m0plus)
+endif()
+set(NEAT_ARM_FLAGS "-mcpu=${NEAT_ARM_CPU} -mthumb")
+if(NEAT_ARM_CPU STREQUAL "cortex-m4")
+  set(NEAT_ARM_FLAGS "${NEAT_ARM_FLAGS} -mfloat-abi=soft")
+endif()
+set(CMAKE_C_FLAGS_INIT "${NEAT_ARM_FLAGS} -ffreestanding -ffunction-sections -fdata-sections")
+set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
+set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
