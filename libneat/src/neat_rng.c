@@ -52,12 +52,19 @@ uint32_t neat_rng_below(neat_rng *rng, uint32_t n)
 
 uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys)
 {
+    /* Every input passes through the splitmix64 bijection before it is
+     * combined, so (base, keys) pairs cannot cancel out the way a plain
+     * base ^ key would (base 1, run r and base 2, run r ^ 3 colliding). */
     uint64_t h = base, st;
     size_t i;
-    for (i = 0; i < n_keys; i++) {
-        st = h ^ keys[i];
-        h = neat_splitmix64(&st) + (uint64_t)i;
-    }
     st = h;
-    return neat_splitmix64(&st);
+    h = neat_splitmix64(&st);
+    for (i = 0; i < n_keys; i++) {
+        uint64_t k = keys[i] + 0xD1B54A32D192ED03ull * (uint64_t)(i + 1);
+        st = k;
+        k = neat_splitmix64(&st);
+        st = h ^ k;
+        h = neat_splitmix64(&st);
+    }
+    return h;
 }

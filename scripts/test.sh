@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The whole test suite: unit tests (normal and ASan+UBSan builds), the blob fuzzer,
+# the Cortex-M0+ cross build of the runtime with its sizes, and a short benchmark smoke run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+
+echo "== build and unit tests (RelWithDebInfo)"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+ninja -C build
+ctest --test-dir build --output-on-failure -j "$jobs"
+
+echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer"
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DNEAT_SANITIZE=ON >/dev/null
+ninja -C build-asan
+ctest --test-dir build-asan --output-on-failure -j "$jobs"
+
+echo "== runtime for Cortex-M0+ (arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os)"
+cmake -S . -B build-arm -G Ninja -DCMAKE_TOOLCHAIN_FILE=cmake/arm-none-eabi.cmake \
+      -DCMAKE_BUILD_TYPE=MinSizeRel -DNEAT_RUNTIME_ONLY=ON >/dev/null
+ninja -C build-arm
+# Nothing but memcpy/memset from libc, and no floating-point helper.
+undef=$(arm-none-eabi-nm -u build-arm/libnrt.a | awk '{print $2}' | sort -u | grep -v '^nrt_' || true)
+echo "runtime needs from outside: $undef"
+for s in $undef; do
+  case "$s" in memcpy|memset) ;; *) echo "FAIL: the runtime needs $s"; exit 1;; esac
+done
+
+echo "== fuzzing the blob loader (libFuzzer, 60 s)"
+CC=clang cmake -S . -B build-fuzz -G Ninja -DNEAT_FUZZ=ON -DNEAT_TESTS=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+ninja -C build-fuzz fuzz_blob
+corpus=$(mktemp -d)
+cp tests/fuzz/corpus/* "$corpus"/
+./build-fuzz/tests/fuzz_blob -max_total_time=60 -print_final_stats=1 "$corpus" 2>&1 | tail -5
+rm -rf "$corpus"
+
+echo "== benchmark smoke run"
+./build/bin/neat_bench xor --runs 10 --quiet | tail -1
