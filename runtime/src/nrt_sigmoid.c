@@ -51,7 +51,10 @@ nrt_q15 nrt_sigmoid(int64_t sum)
         if (y > 32767)
             y = 32767;
     } else {
-        /* -sum cannot overflow: |sum| < 2^40 for any valid network */
+        /* clamp before negating: -INT64_MIN would overflow (a valid network's
+         * sum stays below 2^47 in magnitude, but callers may pass anything) */
+        if (sum < -NRT_SIG_LIMIT)
+            sum = -NRT_SIG_LIMIT;
         y = 32768 - nrt_sig_pos(-sum);
     }
     return (nrt_q15)y;

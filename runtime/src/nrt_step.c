@@ -23,7 +23,8 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
     memcpy(prev, inputs, 2u * n_in);
     memcpy(next, inputs, 2u * n_in);
     for (j = 0; j < non_in; j++) {
-        /* Q3.12 x Q1.15 = Q27 products; 64 bits hold any sum of 256 of them. */
+        /* Q3.12 x Q1.15 = Q27 products (< 2^30); 64 bits hold the sum of the
+         * at most 65535 connections a blob can give one node (< 2^46). */
         int64_t sum = 0;
         uint32_t e = net->end[j];
         for (; k < e; k++)

@@ -1,0 +1,49 @@
+/* fuzz_blob.c - libFuzzer harness: any bytes through nrt_inspect, nrt_load, nrt_step and nrt_settle must never crash. */
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "nrt.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* More than any valid blob needs (65535 connections, 256 nodes: about 198 KB). */
+static uint8_t fuzz_mem[300000];
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    nrt_net net;
+    nrt_q15 inputs[NRT_MAX_NODES], outputs[NRT_MAX_NODES];
+    size_t blob_size = 0, need = 0, off = size & 1u; /* odd buffer addresses too */
+    uint32_t i;
+    int err, s;
+
+    err = nrt_inspect(data, size, &blob_size, &need);
+    if (err == NRT_OK && need > sizeof fuzz_mem - 1)
+        __builtin_trap(); /* nrt_inspect promised more memory than any blob can need */
+    err = nrt_load(&net, data, size, fuzz_mem + off, sizeof fuzz_mem - off);
+    if (err != NRT_OK) {
+        if (err < NRT_E_TRAILING || err > NRT_E_ARG || nrt_strerror(err)[0] == '\0')
+            __builtin_trap();
+        return 0;
+    }
+    if (blob_size != size || net.n_inputs > NRT_MAX_NODES || net.n_outputs > NRT_MAX_NODES)
+        __builtin_trap();
+
+    for (i = 0; i < net.n_inputs; i++)
+        inputs[i] = (nrt_q15)(i == 0 ? NRT_ONE : (int32_t)(i * 7919u % 65536u) - 32768);
+    nrt_reset(&net);
+    for (s = 0; s < 10; s++)
+        nrt_step(&net, inputs, (s & 1) ? outputs : NULL);
+    for (i = 0; i < net.n_outputs; i++)
+        if (outputs[i] < 0)
+            __builtin_trap(); /* a sigmoid is never negative */
+    (void)nrt_settle(&net, inputs, outputs, 0);
+    (void)nrt_settle(&net, inputs, outputs, 1);
+    (void)nrt_settle(&net, inputs, NULL, 5);
+    memset(inputs, 0, sizeof inputs);
+    s = nrt_settle(&net, inputs, outputs, 300);
+    if (s < -1 || s == 0 || s > 300)
+        __builtin_trap();
+    return 0;
+}
