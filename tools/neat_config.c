@@ -41,6 +41,7 @@ static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(weight_perturb_prob, NEAT_CFG_F64, 0, 1),
     NEAT_KEY(weight_perturb_power, NEAT_CFG_F64, 0, 1e3),
     NEAT_KEY(weight_init_range, NEAT_CFG_F64, 0, 8),
+    NEAT_KEY(weight_replace_range, NEAT_CFG_F64, 0, 8),
     NEAT_KEY(weight_max, NEAT_CFG_F64, 1e-9, 8),
     NEAT_KEY(add_conn_prob, NEAT_CFG_F64, 0, 1),
     NEAT_KEY(add_node_prob, NEAT_CFG_F64, 0, 1),

@@ -116,7 +116,8 @@ typedef struct neat_params {
     double weight_mut_prob;     /* 0.8 */
     double weight_perturb_prob; /* 0.9 (else a new random value) */
     double weight_perturb_power;/* perturbation uniform in [-power, power] */
-    double weight_init_range;   /* new weights uniform in [-range, range] */
+    double weight_init_range;   /* initial weights and new connections uniform in [-range, range] */
+    double weight_replace_range;/* a replaced weight is uniform in [-range, range] */
     double weight_max;          /* |w| clamp; must fit the blob's Q3.12 range */
     double add_conn_prob;       /* 0.1 */
     double add_node_prob;       /* 0.01 */

@@ -164,6 +164,7 @@ static void neat_put_params(neat_wbuf *w, const neat_params *p)
     neat_put_f64(w, p->weight_perturb_prob);
     neat_put_f64(w, p->weight_perturb_power);
     neat_put_f64(w, p->weight_init_range);
+    neat_put_f64(w, p->weight_replace_range);
     neat_put_f64(w, p->weight_max);
     neat_put_f64(w, p->add_conn_prob);
     neat_put_f64(w, p->add_node_prob);
@@ -202,6 +203,7 @@ static void neat_get_params(neat_rbuf *r, neat_params *p)
     p->weight_perturb_prob = neat_get_f64(r);
     p->weight_perturb_power = neat_get_f64(r);
     p->weight_init_range = neat_get_f64(r);
+    p->weight_replace_range = neat_get_f64(r);
     p->weight_max = neat_get_f64(r);
     p->add_conn_prob = neat_get_f64(r);
     p->add_node_prob = neat_get_f64(r);

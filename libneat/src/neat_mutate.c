@@ -17,7 +17,7 @@ int neat_mutate_weights(neat_genome *g, const neat_params *p, neat_rng *rng)
         if (u < p->weight_perturb_prob)
             *w = neat_clamp(*w + r * p->weight_perturb_power, p->weight_max);
         else
-            *w = r * p->weight_init_range;
+            *w = r * p->weight_replace_range;
     }
     return NEAT_OK;
 }

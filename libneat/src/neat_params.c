@@ -37,6 +37,7 @@ neat_params neat_params_default(void)
     p.weight_perturb_prob = 0.9;
     p.weight_perturb_power = 2.5; /* C++ release, pole2_markov.ne */
     p.weight_init_range = 1.0;  /* C++ release: new links uniform in [-1, 1] */
+    p.weight_replace_range = 2.5; /* C++ release: a replaced weight is uniform in +-power */
     p.weight_max = 8.0;         /* C++ release cap; also the blob's Q3.12 range */
     p.add_conn_prob = 0.1;
     p.add_node_prob = 0.01;
@@ -98,6 +99,8 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "weight_max";
     else if (!(p->weight_init_range >= 0) || p->weight_init_range > p->weight_max)
         bad = "weight_init_range";
+    else if (!(p->weight_replace_range >= 0) || p->weight_replace_range > p->weight_max)
+        bad = "weight_replace_range";
     else if (!neat_prob_ok(p->add_conn_prob))
         bad = "add_conn_prob";
     else if (!neat_prob_ok(p->add_node_prob) || p->add_node_prob + p->add_conn_prob > 1.0)
