@@ -123,7 +123,6 @@ typedef struct neat_params {
     double add_node_prob;       /* 0.01 */
     uint32_t add_conn_tries;    /* attempts to find an unconnected pair */
     int allow_recurrent;        /* 1: recurrent and self connections may be added */
-    double toggle_enable_prob;  /* re-enable a disabled gene (as mutation) */
     uint32_t max_nodes;         /* never more nodes than the blob format allows (256) */
 } neat_params;
 
@@ -206,9 +205,9 @@ const neat_params *neat_pop_params(const neat_pop *pop);
 const neat_genome *neat_pop_genome(const neat_pop *pop, uint32_t i);
 /* Thread-safe for distinct i. Rejects NaN, infinity and negatives (NEAT_E_FITNESS). */
 int neat_pop_set_fitness(neat_pop *pop, uint32_t i, double fitness);
-/* Speciate done, fitness set for every genome: next generation. On
- * NEAT_E_FITNESS, neat_pop_error_index names the first bad genome and the
- * population is unchanged. */
+/* Fitness set for every genome: the next generation. On any error the
+ * population is unchanged (NEAT_E_FITNESS: neat_pop_error_index names the
+ * first bad genome; NEAT_E_NOMEM: a retry gives the same generation). */
 int neat_pop_epoch(neat_pop *pop);
 uint32_t neat_pop_error_index(const neat_pop *pop);
 

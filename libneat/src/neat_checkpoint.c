@@ -272,6 +272,48 @@ static void neat_get_genome(neat_rbuf *r, neat_genome *g, const neat_params *p, 
     }
 }
 
+/* Largest node id and innovation number a genome uses. */
+static void neat_genome_max_ids(const neat_genome *g, uint32_t *node, uint32_t *innov)
+{
+    if (g->n_nodes > 0 && g->nodes[g->n_nodes - 1].id > *node)
+        *node = g->nodes[g->n_nodes - 1].id;
+    if (g->n_conns > 0 && g->conns[g->n_conns - 1].innov > *innov)
+        *innov = g->conns[g->n_conns - 1].innov;
+}
+
+/* The counters and state a correct CRC alone cannot vouch for: counters
+ * above every number in use, unique species ids, a usable threshold and a
+ * PRNG state that is not the all-zero fixed point. */
+static int neat_pop_state_ok(const neat_pop *pop)
+{
+    uint32_t i, k, j, node = 0, innov = 0;
+    if (!(pop->delta_t > 0) || pop->delta_t > 1e300)
+        return 0;
+    if ((pop->rng.s[0] | pop->rng.s[1] | pop->rng.s[2] | pop->rng.s[3]) == 0)
+        return 0;
+    for (i = 0; i < pop->p.pop_size; i++)
+        neat_genome_max_ids(&pop->genomes[i], &node, &innov);
+    if (pop->have_best) {
+        neat_genome_max_ids(&pop->best_ever, &node, &innov);
+        neat_genome_max_ids(&pop->last_best, &node, &innov);
+    }
+    for (k = 0; k < pop->n_species; k++) {
+        neat_genome_max_ids(&pop->species[k].rep, &node, &innov);
+        if (pop->species[k].id >= pop->next_species_id)
+            return 0;
+        for (j = 0; j < k; j++)
+            if (pop->species[j].id == pop->species[k].id)
+                return 0;
+    }
+    for (i = 0; i < pop->iv.n; i++) {
+        const neat_innov *v = &pop->iv.list[i];
+        if (v->kind > NEAT_INNOV_NODE || v->innov >= pop->iv.next_innov ||
+            (v->kind == NEAT_INNOV_NODE && (v->innov2 >= pop->iv.next_innov || v->node >= pop->iv.next_node)))
+            return 0;
+    }
+    return node < pop->iv.next_node && innov < pop->iv.next_innov;
+}
+
 int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len)
 {
     neat_wbuf w;
@@ -354,6 +396,7 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
     uint32_t i, k, n, stored_crc;
     const uint8_t *magic;
     uint8_t *seen = NULL;
+    size_t state_off;
     int err;
 
     if (out == NULL || buf == NULL)
@@ -393,6 +436,7 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
             neat_fail(&r, NEAT_E_FORMAT);
         }
     }
+    state_off = r.off;
     if (!r.err) {
         err = neat_pop_alloc(&pop, &p, alloc);
         if (err)
@@ -471,6 +515,10 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
                 neat_fail(&r, NEAT_E_FORMAT);
         if (!r.err && r.off != r.n)
             neat_fail(&r, NEAT_E_FORMAT); /* bytes left over */
+        if (!r.err && !neat_pop_state_ok(pop)) {
+            r.off = state_off; /* the population state, after the parameters */
+            neat_fail(&r, NEAT_E_FORMAT);
+        }
         neat_mem_free(&pop->a, seen, p.pop_size);
     }
     if (r.err) {

@@ -59,6 +59,10 @@ typedef struct neat_species {
     neat_genome rep;   /* representative, a member of the previous generation */
     uint32_t *members; /* indices into pop->genomes, best first after neat_species_rank */
     uint32_t n_members, cap_members;
+    /* per-epoch scratch: statistics after this generation (neat_species_rank),
+     * committed only when the epoch succeeds */
+    double next_best;
+    uint32_t next_since;
     /* per-epoch scratch (neat_apportion) */
     double adj_sum;    /* sum of the members' shared fitness */
     double remainder;  /* fractional part of its quota */
@@ -88,17 +92,35 @@ struct neat_pop {
  * neat_pop_create and neat_pop_load). */
 int neat_pop_alloc(neat_pop **out, const neat_params *p, const neat_alloc *alloc);
 
-/* Sorts the genomes into species (pop->species' representatives are from
- * the previous generation), drops empty species and moves delta_t. */
+/* Speciation in two phases so that an epoch refused memory leaves the
+ * population as it was: the plan decides each genome's species and
+ * allocates everything; the commit cannot fail. */
+typedef struct neat_spec_plan {
+    uint32_t *slot;       /* [pop_size] species index; >= n_species: a new species */
+    uint32_t *founder;    /* [n_new] genome founding each new species */
+    uint32_t *count;      /* [n_species + n_new] members per slot */
+    uint32_t **members;   /* [n_new] member arrays of the new species */
+    neat_genome *reps;    /* [n_new] their representatives */
+    uint32_t ns;          /* species before the plan */
+    uint32_t n_new, n_slots, cap;
+} neat_spec_plan;
+/* Plans the speciation of gs[pop_size] against pop->species' representatives. */
+int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan);
+/* Applies it to gs (which must be pop->genomes by then): fills the species,
+ * founds the new ones, drops empty ones, moves delta_t. Frees the plan. */
+void neat_speciate_commit(neat_pop *pop, neat_spec_plan *plan);
+void neat_speciate_plan_free(neat_pop *pop, neat_spec_plan *plan);
+/* Both at once, on pop->genomes (population creation). */
 int neat_speciate(neat_pop *pop);
-/* Members of each species best first (ties: lower index); updates best
- * fitness and the improvement counters. */
+/* Members of each species best first (ties: lower index), and the species'
+ * statistics after this generation into next_best / next_since. */
 void neat_species_rank(neat_pop *pop);
 void neat_species_free(neat_species *s, const neat_alloc *a);
 
 /* ---- reproduction (neat_reproduce.c) ---- */
-/* offspring per species: sum == pop_size, whatever the fitness values */
-void neat_apportion(neat_pop *pop);
+/* offspring per species: sum == pop_size, whatever the fitness values.
+ * *since_pop: generations without a new population best (may be reset). */
+void neat_apportion(neat_pop *pop, uint32_t *since_pop);
 /* the next generation into next[pop_size] (initialised genomes) */
 int neat_reproduce(neat_pop *pop, neat_genome *next);
 

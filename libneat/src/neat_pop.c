@@ -72,7 +72,7 @@ int neat_pop_create(neat_pop **out, const neat_params *p, const neat_start *star
         err = neat_genome_minimal(&minimal, p->n_inputs, p->n_outputs, &pop->a);
         g0 = &minimal;
     }
-    if (!err && (g0->n_nodes > p->max_nodes || g0->n_nodes < p->n_inputs + p->n_outputs + 1))
+    if (!err && (g0->n_nodes > p->max_nodes || !neat_genome_io_ok(g0, p->n_inputs, p->n_outputs)))
         err = NEAT_E_ARG;
     if (!err) {
         /* the start's markings are the population's first */
@@ -159,9 +159,12 @@ uint32_t neat_pop_error_index(const neat_pop *pop)
 
 int neat_pop_epoch(neat_pop *pop)
 {
-    uint32_t i, k, best = 0;
-    neat_genome *next;
-    int err;
+    uint32_t i, k, best = 0, since_pop;
+    neat_genome *next = NULL, last, ever;
+    neat_spec_plan plan;
+    neat_rng saved_rng;
+    neat_innovs saved_iv;
+    int improved, err;
 
     if (pop == NULL)
         return NEAT_E_ARG;
@@ -173,42 +176,72 @@ int neat_pop_epoch(neat_pop *pop)
         if (pop->genomes[i].fitness > pop->genomes[best].fitness)
             best = i;
     }
-    neat_species_rank(pop);
-    err = neat_genome_copy(&pop->last_best, &pop->genomes[best], &pop->a);
-    if (err)
-        return err;
-    if (!pop->have_best || pop->genomes[best].fitness > pop->best_ever.fitness) {
-        err = neat_genome_copy(&pop->best_ever, &pop->genomes[best], &pop->a);
-        if (err)
-            return err;
-        pop->have_best = 1;
-        pop->since_pop_improved = 0;
-    } else {
-        pop->since_pop_improved++;
+    /* Everything that can fail comes first, on copies; the population
+     * changes only in the commit below, which cannot fail. So an epoch
+     * refused memory leaves the population as it was, and a retry gives
+     * the same generation as if nothing had failed. */
+    saved_rng = pop->rng;
+    saved_iv = pop->iv;
+    neat_genome_init(&last);
+    neat_genome_init(&ever);
+    neat_species_rank(pop); /* sorting members changes nothing the retry would not redo */
+    improved = !pop->have_best || pop->genomes[best].fitness > pop->best_ever.fitness;
+    since_pop = improved ? 0 : pop->since_pop_improved + 1;
+    err = neat_genome_copy(&last, &pop->genomes[best], &pop->a);
+    if (!err && improved)
+        err = neat_genome_copy(&ever, &pop->genomes[best], &pop->a);
+    if (!err) {
+        neat_apportion(pop, &since_pop);
+        /* the next generation's representatives: random members of this one
+         * (a retry draws the same ones from the restored PRNG) */
+        for (k = 0; k < pop->n_species && !err; k++) {
+            neat_species *s = &pop->species[k];
+            err = neat_genome_copy(&s->rep, &pop->genomes[s->members[neat_rng_below(&pop->rng, s->n_members)]],
+                                   &pop->a);
+        }
     }
-    neat_apportion(pop);
-    /* next generation's representatives: random members of this one */
-    for (k = 0; k < pop->n_species; k++) {
-        neat_species *s = &pop->species[k];
-        err = neat_genome_copy(&s->rep, &pop->genomes[s->members[neat_rng_below(&pop->rng, s->n_members)]], &pop->a);
-        if (err)
-            return err;
+    if (!err) {
+        next = neat_genomes_new(pop->p.pop_size, &pop->a);
+        if (next == NULL)
+            err = NEAT_E_NOMEM;
     }
-    next = neat_genomes_new(pop->p.pop_size, &pop->a);
-    if (next == NULL)
-        return NEAT_E_NOMEM;
-    neat_innov_reset(&pop->iv);
-    err = neat_reproduce(pop, next);
+    if (!err) {
+        neat_innov_reset(&pop->iv);
+        err = neat_reproduce(pop, next);
+    }
+    if (!err)
+        err = neat_speciate_plan(pop, next, &plan);
     if (err) {
         neat_genomes_free(next, pop->p.pop_size, &pop->a);
+        neat_genome_free(&last, &pop->a);
+        neat_genome_free(&ever, &pop->a);
+        pop->rng = saved_rng;
+        /* the list may have grown (moved): keep its memory, restore its length and counters */
+        pop->iv.n = saved_iv.n;
+        pop->iv.next_innov = saved_iv.next_innov;
+        pop->iv.next_node = saved_iv.next_node;
         return err;
+    }
+
+    /* commit */
+    neat_genome_free(&pop->last_best, &pop->a);
+    pop->last_best = last;
+    if (improved) {
+        neat_genome_free(&pop->best_ever, &pop->a);
+        pop->best_ever = ever;
+    }
+    pop->have_best = 1;
+    pop->since_pop_improved = since_pop;
+    for (k = 0; k < pop->n_species; k++) {
+        pop->species[k].best_fitness = pop->species[k].next_best;
+        pop->species[k].since_improved = pop->species[k].next_since;
+        pop->species[k].age++;
     }
     neat_genomes_free(pop->genomes, pop->p.pop_size, &pop->a);
     pop->genomes = next;
-    for (k = 0; k < pop->n_species; k++)
-        pop->species[k].age++;
+    neat_speciate_commit(pop, &plan);
     pop->generation++;
-    return neat_speciate(pop);
+    return NEAT_OK;
 }
 
 const neat_genome *neat_pop_last_best(const neat_pop *pop)

@@ -20,7 +20,7 @@ static double neat_champ_fitness(const neat_pop *pop, uint32_t k)
 }
 
 /* Which species may breed this generation (docs/parameters.md, "Stagnation"). */
-static void neat_mark_eligible(neat_pop *pop)
+static void neat_mark_eligible(neat_pop *pop, uint32_t *since_pop)
 {
     uint32_t k, n_ok = 0, worst = UINT32_MAX, top0 = UINT32_MAX, top1 = UINT32_MAX;
 
@@ -35,17 +35,17 @@ static void neat_mark_eligible(neat_pop *pop)
     }
     /* The whole population stagnant: only the two best species breed (the
      * C++ release's rule), then the counter starts again. */
-    if (pop->p.pop_stagnation > 0 && pop->since_pop_improved >= pop->p.pop_stagnation && pop->n_species > 2) {
+    if (pop->p.pop_stagnation > 0 && *since_pop >= pop->p.pop_stagnation && pop->n_species > 2) {
         for (k = 0; k < pop->n_species; k++)
             pop->species[k].eligible = k == top0 || k == top1;
-        pop->since_pop_improved = 0;
+        *since_pop = 0;
     }
     if (pop->p.stagnation_rule == NEAT_STAGNATION_IMPROVEMENT) {
         /* 2002 paper: a species not improved for dropoff_age generations
          * stops breeding (or, factor > 0, breeds at that fraction, as the
          * C++ release); the species holding the best genome never does. */
         for (k = 0; k < pop->n_species; k++)
-            if (pop->species[k].eligible && k != top0 && pop->species[k].since_improved >= pop->p.dropoff_age) {
+            if (pop->species[k].eligible && k != top0 && pop->species[k].next_since >= pop->p.dropoff_age) {
                 if (pop->p.stagnation_factor > 0)
                     pop->species[k].adj_sum *= pop->p.stagnation_factor;
                 else
@@ -67,14 +67,26 @@ static void neat_mark_eligible(neat_pop *pop)
         pop->species[worst].eligible = 0;
 }
 
-void neat_apportion(neat_pop *pop)
+void neat_apportion(neat_pop *pop, uint32_t *since_pop)
 {
     uint32_t k, given = 0, n_elig = 0, n = pop->p.pop_size;
     double total = 0.0;
 
     for (k = 0; k < pop->n_species; k++)
         pop->species[k].adj_sum = neat_shared_sum(pop, &pop->species[k]);
-    neat_mark_eligible(pop);
+    neat_mark_eligible(pop, since_pop);
+    /* scaled by a power of two (exact) so the largest share is below 1:
+     * n * share cannot overflow, whatever the magnitude of the fitness */
+    {
+        double top = 0.0;
+        int e = 0;
+        for (k = 0; k < pop->n_species; k++)
+            if (pop->species[k].eligible && pop->species[k].adj_sum > top)
+                top = pop->species[k].adj_sum;
+        (void)frexp(top, &e);
+        for (k = 0; k < pop->n_species; k++)
+            pop->species[k].adj_sum = ldexp(pop->species[k].adj_sum, -e);
+    }
     for (k = 0; k < pop->n_species; k++)
         if (pop->species[k].eligible) {
             total += pop->species[k].adj_sum;

@@ -10,43 +10,108 @@ void neat_species_free(neat_species *s, const neat_alloc *a)
     memset(s, 0, sizeof *s);
 }
 
-static int neat_species_join(neat_species *s, uint32_t idx, const neat_alloc *a)
+void neat_speciate_plan_free(neat_pop *pop, neat_spec_plan *plan)
 {
-    if (neat_mem_reserve(a, (void **)&s->members, &s->cap_members, s->n_members + 1, sizeof(uint32_t)))
-        return NEAT_E_NOMEM;
-    s->members[s->n_members++] = idx;
-    return NEAT_OK;
+    uint32_t j;
+    const neat_alloc *a = &pop->a;
+    for (j = 0; j < plan->n_new; j++) {
+        if (plan->reps != NULL)
+            neat_genome_free(&plan->reps[j], a);
+        if (plan->members != NULL && plan->count != NULL)
+            neat_mem_free(a, plan->members[j], (size_t)plan->count[plan->ns + j] * sizeof(uint32_t));
+    }
+    neat_mem_free(a, plan->slot, (size_t)pop->p.pop_size * sizeof(uint32_t));
+    neat_mem_free(a, plan->founder, (size_t)plan->cap * sizeof(uint32_t));
+    neat_mem_free(a, plan->count, (size_t)(plan->ns + plan->cap) * sizeof(uint32_t));
+    neat_mem_free(a, plan->members, (size_t)plan->cap * sizeof(uint32_t *));
+    neat_mem_free(a, plan->reps, (size_t)plan->cap * sizeof(neat_genome));
+    memset(plan, 0, sizeof *plan);
 }
 
-int neat_speciate(neat_pop *pop)
+int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan)
 {
-    uint32_t i, k, kept;
-    int err;
+    const neat_alloc *a = &pop->a;
+    uint32_t i, k, j, n = pop->p.pop_size, ns = pop->n_species;
 
-    for (k = 0; k < pop->n_species; k++)
-        pop->species[k].n_members = 0;
-    for (i = 0; i < pop->p.pop_size; i++) {
-        neat_genome *g = &pop->genomes[i];
-        /* the first species (oldest first) whose representative is close enough */
-        for (k = 0; k < pop->n_species; k++)
-            if (neat_genome_distance(g, &pop->species[k].rep, &pop->p) < pop->delta_t)
+    memset(plan, 0, sizeof *plan);
+    /* at most one new species per genome */
+    plan->cap = n;
+    plan->ns = ns;
+    plan->slot = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)n * sizeof(uint32_t));
+    plan->founder = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)n * sizeof(uint32_t));
+    plan->count = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)(ns + n) * sizeof(uint32_t));
+    if (plan->slot == NULL || plan->founder == NULL || plan->count == NULL)
+        goto nomem;
+    memset(plan->count, 0, (size_t)(ns + n) * sizeof(uint32_t));
+    for (i = 0; i < n; i++) {
+        /* the first species (oldest first) whose representative is close
+         * enough; the founders of this generation's new species come last */
+        for (k = 0; k < ns; k++)
+            if (neat_genome_distance(&gs[i], &pop->species[k].rep, &pop->p) < pop->delta_t)
                 break;
-        if (k == pop->n_species) {
-            neat_species *s;
-            if (neat_mem_reserve(&pop->a, (void **)&pop->species, &pop->cap_species, pop->n_species + 1,
-                                 sizeof(neat_species)))
-                return NEAT_E_NOMEM;
-            s = &pop->species[pop->n_species++];
-            memset(s, 0, sizeof *s);
-            s->id = pop->next_species_id++;
-            err = neat_genome_copy(&s->rep, g, &pop->a);
-            if (err)
-                return err;
+        if (k == ns) {
+            for (j = 0; j < plan->n_new; j++)
+                if (neat_genome_distance(&gs[i], &gs[plan->founder[j]], &pop->p) < pop->delta_t)
+                    break;
+            if (j == plan->n_new)
+                plan->founder[plan->n_new++] = i;
+            k = ns + j;
         }
-        err = neat_species_join(&pop->species[k], i, &pop->a);
-        if (err)
-            return err;
-        g->species = pop->species[k].id;
+        plan->slot[i] = k;
+        plan->count[k]++;
+    }
+    plan->n_slots = ns + plan->n_new;
+    /* every allocation the commit will need, now */
+    if (neat_mem_reserve(a, (void **)&pop->species, &pop->cap_species, plan->n_slots, sizeof(neat_species)))
+        goto nomem;
+    for (k = 0; k < ns; k++) {
+        neat_species *s = &pop->species[k];
+        if (neat_mem_reserve(a, (void **)&s->members, &s->cap_members, plan->count[k], sizeof(uint32_t)))
+            goto nomem;
+    }
+    if (plan->n_new > 0) {
+        plan->members = (uint32_t **)neat_mem_realloc(a, NULL, 0, (size_t)plan->cap * sizeof(uint32_t *));
+        plan->reps = (neat_genome *)neat_mem_realloc(a, NULL, 0, (size_t)plan->cap * sizeof(neat_genome));
+        if (plan->members == NULL || plan->reps == NULL)
+            goto nomem;
+        for (j = 0; j < plan->n_new; j++) {
+            plan->members[j] = NULL;
+            neat_genome_init(&plan->reps[j]);
+        }
+        for (j = 0; j < plan->n_new; j++) {
+            plan->members[j] = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)plan->count[ns + j] * sizeof(uint32_t));
+            if (plan->members[j] == NULL || neat_genome_copy(&plan->reps[j], &gs[plan->founder[j]], a))
+                goto nomem;
+        }
+    }
+    return NEAT_OK;
+nomem:
+    neat_speciate_plan_free(pop, plan);
+    return NEAT_E_NOMEM;
+}
+
+void neat_speciate_commit(neat_pop *pop, neat_spec_plan *plan)
+{
+    uint32_t i, k, j, kept, ns = pop->n_species;
+
+    for (k = 0; k < ns; k++)
+        pop->species[k].n_members = 0;
+    for (j = 0; j < plan->n_new; j++) {
+        neat_species *s = &pop->species[ns + j];
+        memset(s, 0, sizeof *s);
+        s->id = pop->next_species_id++;
+        s->rep = plan->reps[j]; /* moved */
+        neat_genome_init(&plan->reps[j]);
+        s->members = plan->members[j];
+        s->cap_members = plan->count[ns + j];
+        plan->members[j] = NULL;
+        plan->count[ns + j] = 0;
+    }
+    pop->n_species = plan->n_slots;
+    for (i = 0; i < pop->p.pop_size; i++) {
+        neat_species *s = &pop->species[plan->slot[i]];
+        s->members[s->n_members++] = i;
+        pop->genomes[i].species = s->id;
     }
     /* species no genome joined have died out */
     for (k = 0, kept = 0; k < pop->n_species; k++) {
@@ -64,7 +129,16 @@ int neat_speciate(neat_pop *pop)
         if (pop->delta_t < pop->p.delta_t_min)
             pop->delta_t = pop->p.delta_t_min;
     }
-    return NEAT_OK;
+    neat_speciate_plan_free(pop, plan);
+}
+
+int neat_speciate(neat_pop *pop)
+{
+    neat_spec_plan plan;
+    int err = neat_speciate_plan(pop, pop->genomes, &plan);
+    if (!err)
+        neat_speciate_commit(pop, &plan);
+    return err;
 }
 
 /* better-first order: higher fitness, then lower index */
@@ -87,10 +161,11 @@ void neat_species_rank(neat_pop *pop)
             s->members[j] = m;
         }
         if (s->age == 0 || pop->genomes[s->members[0]].fitness > s->best_fitness) {
-            s->best_fitness = pop->genomes[s->members[0]].fitness;
-            s->since_improved = 0;
+            s->next_best = pop->genomes[s->members[0]].fitness;
+            s->next_since = 0;
         } else {
-            s->since_improved++;
+            s->next_best = s->best_fitness;
+            s->next_since = s->since_improved + 1;
         }
     }
 }

@@ -1,0 +1,545 @@
+/* test_checkpoint.c - checkpoints: exact resumption, stable bytes, truncation, corruption and header errors. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "neat_internal.h"
+#include "nrt.h"
+
+static neat_params ckpt_params(uint32_t pop_size)
+{
+    neat_params p = neat_params_default();
+    p.pop_size = pop_size;
+    p.n_inputs = 2;
+    p.n_outputs = 1;
+    p.add_node_prob = 0.05;
+    p.add_conn_prob = 0.2;
+    return p;
+}
+
+static double toy_fitness(const neat_genome *g)
+{
+    double s = 0.0;
+    uint32_t i;
+    for (i = 0; i < g->n_conns; i++)
+        if (g->conns[i].enabled)
+            s += g->conns[i].weight * (double)(1 + i % 3);
+    return 1.0 / (1.0 + fabs(s - 1.5)) + 0.01 * neat_genome_hidden_count(g);
+}
+
+static void evaluate(neat_pop *pop, uint32_t from, uint32_t to)
+{
+    uint32_t i;
+    for (i = from; i < to; i++)
+        assert_int_equal(neat_pop_set_fitness(pop, i, toy_fitness(neat_pop_genome(pop, i))), NEAT_OK);
+}
+
+static void run_generations(neat_pop *pop, uint32_t n)
+{
+    uint32_t g;
+    for (g = 0; g < n; g++) {
+        evaluate(pop, 0, neat_pop_size(pop));
+        assert_int_equal(neat_pop_epoch(pop), NEAT_OK);
+    }
+}
+
+static neat_pop *evolved_pop(uint32_t pop_size, uint32_t generations, uint64_t seed)
+{
+    neat_params p = ckpt_params(pop_size);
+    neat_pop *pop = NULL;
+    assert_int_equal(neat_pop_create(&pop, &p, NULL, seed, NULL), NEAT_OK);
+    run_generations(pop, generations);
+    return pop;
+}
+
+static void save(const neat_pop *pop, uint8_t **buf, size_t *len)
+{
+    assert_int_equal(neat_pop_save(pop, buf, len), NEAT_OK);
+    assert_true(*len > 16);
+}
+
+static neat_pop *load_ok(const uint8_t *buf, size_t len)
+{
+    neat_pop *pop = NULL;
+    size_t off = 12345;
+    assert_int_equal(neat_pop_load(&pop, buf, len, NULL, &off), NEAT_OK);
+    assert_non_null(pop);
+    return pop;
+}
+
+static void reseal(uint8_t *buf, size_t len)
+{
+    uint32_t crc = nrt_crc32(0, buf, len - 4);
+    buf[len - 4] = (uint8_t)crc;
+    buf[len - 3] = (uint8_t)(crc >> 8);
+    buf[len - 2] = (uint8_t)(crc >> 16);
+    buf[len - 1] = (uint8_t)(crc >> 24);
+}
+
+static void assert_same_bytes(const neat_pop *a, const neat_pop *b)
+{
+    uint8_t *ba, *bb;
+    size_t la, lb;
+    save(a, &ba, &la);
+    save(b, &bb, &lb);
+    assert_int_equal(la, lb);
+    assert_memory_equal(ba, bb, la);
+    neat_pop_buf_free(a, ba, la);
+    neat_pop_buf_free(b, bb, lb);
+}
+
+static void assert_same_best_blob(const neat_pop *a, const neat_pop *b)
+{
+    uint8_t ba[4096], bb[4096];
+    size_t la, lb;
+    assert_non_null(neat_pop_best_ever(a));
+    assert_non_null(neat_pop_best_ever(b));
+    assert_int_equal(neat_blob_write(neat_pop_best_ever(a), 2, 1, ba, sizeof ba, &la), NEAT_OK);
+    assert_int_equal(neat_blob_write(neat_pop_best_ever(b), 2, 1, bb, sizeof bb, &lb), NEAT_OK);
+    assert_int_equal(la, lb);
+    assert_memory_equal(ba, bb, la);
+}
+
+/* ---- round trips ---- */
+
+static void test_resume_gives_same_run(void **state)
+{
+    neat_pop *orig = evolved_pop(40, 5, 21), *copy;
+    uint8_t *buf;
+    size_t len;
+    (void)state;
+    save(orig, &buf, &len);
+    copy = load_ok(buf, len);
+    neat_pop_buf_free(orig, buf, len);
+    assert_int_equal(neat_pop_generation(copy), 5);
+    run_generations(orig, 10);
+    run_generations(copy, 10);
+    assert_int_equal(neat_pop_generation(copy), 15);
+    assert_same_bytes(orig, copy);
+    assert_same_best_blob(orig, copy);
+    /* the run did change over those generations */
+    assert_true(neat_pop_best_ever(orig)->fitness > 0.0);
+    neat_pop_free(orig);
+    neat_pop_free(copy);
+}
+
+static void test_resume_mid_generation(void **state)
+{
+    /* saved with half the fitness values given: the rest given after the
+     * load, then the same epoch */
+    neat_pop *orig = evolved_pop(40, 3, 22), *copy;
+    uint8_t *buf;
+    size_t len;
+    (void)state;
+    evaluate(orig, 0, 20);
+    save(orig, &buf, &len);
+    copy = load_ok(buf, len);
+    neat_pop_buf_free(orig, buf, len);
+    /* the missing ones are still missing after the load */
+    assert_int_equal(neat_pop_epoch(copy), NEAT_E_FITNESS);
+    assert_int_equal(neat_pop_error_index(copy), 20);
+    evaluate(orig, 20, 40);
+    evaluate(copy, 20, 40);
+    assert_int_equal(neat_pop_epoch(orig), NEAT_OK);
+    assert_int_equal(neat_pop_epoch(copy), NEAT_OK);
+    run_generations(orig, 3);
+    run_generations(copy, 3);
+    assert_same_bytes(orig, copy);
+    neat_pop_free(orig);
+    neat_pop_free(copy);
+}
+
+static void test_save_load_save_is_identity(void **state)
+{
+    static const uint32_t gens[] = {0, 1, 6};
+    size_t k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        neat_pop *pop = evolved_pop(30, gens[k], 23 + k), *copy;
+        uint8_t *b1, *b2;
+        size_t l1, l2;
+        save(pop, &b1, &l1);
+        copy = load_ok(b1, l1);
+        save(copy, &b2, &l2);
+        assert_int_equal(l1, l2);
+        assert_memory_equal(b1, b2, l1);
+        /* loaded state answers as the original */
+        assert_int_equal(neat_pop_generation(copy), gens[k]);
+        assert_int_equal(neat_pop_species_count(copy), neat_pop_species_count(pop));
+        assert_int_equal(neat_pop_innovations(copy), neat_pop_innovations(pop));
+        assert_true(neat_pop_delta_t(copy) == neat_pop_delta_t(pop));
+        assert_true((neat_pop_best_ever(copy) == NULL) == (gens[k] == 0));
+        neat_pop_buf_free(pop, b1, l1);
+        neat_pop_buf_free(copy, b2, l2);
+        neat_pop_free(pop);
+        neat_pop_free(copy);
+    }
+}
+
+static void test_save_is_deterministic(void **state)
+{
+    neat_pop *a = evolved_pop(30, 4, 30), *b = evolved_pop(30, 4, 30);
+    (void)state;
+    assert_same_bytes(a, a);
+    assert_same_bytes(a, b);
+    neat_pop_free(a);
+    neat_pop_free(b);
+}
+
+static void test_header_layout(void **state)
+{
+    neat_pop *pop = evolved_pop(10, 1, 31);
+    uint8_t *buf;
+    size_t len;
+    uint32_t crc;
+    (void)state;
+    save(pop, &buf, &len);
+    assert_memory_equal(buf, "NEATCKPT", 8);
+    assert_int_equal(buf[8] | buf[9] << 8 | buf[10] << 16 | (uint32_t)buf[11] << 24, NEAT_CHECKPOINT_VERSION);
+    crc = (uint32_t)buf[len - 4] | (uint32_t)buf[len - 3] << 8 | (uint32_t)buf[len - 2] << 16 |
+          (uint32_t)buf[len - 1] << 24;
+    assert_int_equal(crc, nrt_crc32(0, buf, len - 4));
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+/* ---- damaged checkpoints ---- */
+
+static void test_every_truncation_rejected(void **state)
+{
+    neat_pop *pop = evolved_pop(40, 5, 32), *out;
+    uint8_t *buf, *copy;
+    size_t len, n, off;
+    uint32_t tried = 0;
+    int err;
+    (void)state;
+    save(pop, &buf, &len);
+    assert_true(len > 2000);
+    for (n = 0; n < len; n += n < 2000 ? 1 : 7) {
+        /* a copy of exactly n bytes, so reading past it is caught by ASan */
+        copy = (uint8_t *)malloc(n ? n : 1);
+        assert_non_null(copy);
+        memcpy(copy, buf, n);
+        out = (neat_pop *)copy; /* must be cleared */
+        off = (size_t)-1;
+        err = neat_pop_load(&out, copy, n, NULL, &off);
+        if (err == NEAT_OK)
+            fail_msg("truncated to %zu of %zu bytes: accepted", n, len);
+        assert_null(out);
+        assert_true(err == NEAT_E_TRUNCATED || err == NEAT_E_CRC || err == NEAT_E_FORMAT);
+        assert_true(off <= n);
+        if (n < 16)
+            assert_int_equal(err, NEAT_E_TRUNCATED);
+        free(copy);
+        tried++;
+    }
+    assert_true(tried > 2000);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+static void test_single_byte_corruption_rejected(void **state)
+{
+    static const uint8_t flips[] = {0x01, 0x80, 0xFF};
+    neat_pop *pop = evolved_pop(30, 5, 33), *out;
+    uint8_t *buf;
+    size_t len, i, f, off;
+    int err;
+    (void)state;
+    save(pop, &buf, &len);
+    for (i = 0; i < len; i++)
+        for (f = 0; f < 3; f++) {
+            if (f > 0 && i % 5 != 0)
+                continue;
+            buf[i] ^= flips[f];
+            off = (size_t)-1;
+            out = NULL;
+            err = neat_pop_load(&out, buf, len, NULL, &off);
+            buf[i] ^= flips[f];
+            assert_null(out);
+            if (i < 8) { /* magic */
+                assert_int_equal(err, NEAT_E_FORMAT);
+                assert_int_equal(off, 0);
+            } else if (i < 12) { /* version */
+                assert_int_equal(err, NEAT_E_FORMAT);
+                assert_int_equal(off, 8);
+            } else { /* body or checksum: the checksum is where it shows */
+                if (err != NEAT_E_CRC)
+                    fail_msg("byte %zu ^ 0x%02x: error %d", i, flips[f], err);
+                assert_int_equal(off, len - 4);
+            }
+        }
+    /* and the untouched buffer still loads */
+    out = load_ok(buf, len);
+    neat_pop_free(out);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+static void test_bad_magic(void **state)
+{
+    neat_pop *pop = evolved_pop(10, 1, 34), *out = NULL;
+    uint8_t *buf;
+    size_t len, off = 999;
+    (void)state;
+    save(pop, &buf, &len);
+    buf[3] = 'X';
+    reseal(buf, len); /* the magic, not the checksum, is what fails */
+    assert_int_equal(neat_pop_load(&out, buf, len, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 0);
+    assert_null(out);
+    /* not a checkpoint at all */
+    off = 999;
+    assert_int_equal(neat_pop_load(&out, (const uint8_t *)"NRTB0000000000000000", 20, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 0);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+static void test_bad_version(void **state)
+{
+    static const uint8_t versions[][4] = {{0, 0, 0, 0}, {2, 0, 0, 0}, {1, 0, 0, 1}, {0xFF, 0xFF, 0xFF, 0xFF}};
+    neat_pop *pop = evolved_pop(10, 1, 35), *out = NULL;
+    uint8_t *buf;
+    size_t len, off, k;
+    (void)state;
+    save(pop, &buf, &len);
+    for (k = 0; k < 4; k++) {
+        memcpy(buf + 8, versions[k], 4);
+        reseal(buf, len);
+        off = 999;
+        assert_int_equal(neat_pop_load(&out, buf, len, NULL, &off), NEAT_E_FORMAT);
+        assert_int_equal(off, 8);
+        assert_null(out);
+    }
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+static void test_trailing_bytes_rejected(void **state)
+{
+    neat_pop *pop = evolved_pop(10, 1, 36), *out = NULL;
+    uint8_t *buf, *big;
+    size_t len, off = 999;
+    (void)state;
+    save(pop, &buf, &len);
+    big = (uint8_t *)malloc(len + 4);
+    assert_non_null(big);
+    memcpy(big, buf, len - 4);
+    memset(big + len - 4, 0, 4);
+    reseal(big, len + 4);
+    assert_int_equal(neat_pop_load(&out, big, len + 4, NULL, &off), NEAT_E_FORMAT);
+    assert_null(out);
+    assert_true(off <= len);
+    free(big);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+static void test_resealed_corruption_never_crashes(void **state)
+{
+    /* each byte of the body changed and the checksum recomputed: the load
+     * either refuses with an offset inside the buffer, or gives a
+     * population that can still be stepped (errors allowed, no crash, no
+     * leak: run under ASan) */
+    static const uint8_t vals[] = {0x00, 0xFF};
+    neat_pop *pop = evolved_pop(8, 2, 37), *out;
+    uint8_t *buf;
+    size_t len, i, v, off;
+    uint32_t accepted = 0, refused = 0;
+    int err;
+    (void)state;
+    save(pop, &buf, &len);
+    for (i = 12; i < len - 4; i++)
+        for (v = 0; v < 4; v++) {
+            uint8_t old = buf[i];
+            buf[i] = v < 2 ? vals[v] : (uint8_t)(old ^ (v == 2 ? 0x01 : 0x40));
+            if (buf[i] == old) {
+                continue;
+            }
+            reseal(buf, len);
+            out = NULL;
+            off = (size_t)-1;
+            err = neat_pop_load(&out, buf, len, NULL, &off);
+            if (err == NEAT_OK) {
+                uint32_t k;
+                accepted++;
+                assert_non_null(out);
+                /* (a huge add_conn_tries is legal but slow: not stepped) */
+                if (neat_pop_params(out)->add_conn_tries <= 1000) {
+                    for (k = 0; k < neat_pop_size(out); k++)
+                        (void)neat_pop_set_fitness(out, k, 1.0 + k);
+                    (void)neat_pop_epoch(out);
+                }
+                neat_pop_free(out);
+            } else {
+                refused++;
+                assert_null(out);
+                assert_true(err == NEAT_E_FORMAT || err == NEAT_E_TRUNCATED);
+                assert_true(off < len);
+            }
+            buf[i] = old;
+        }
+    reseal(buf, len);
+    assert_true(refused > 0);
+    assert_true(accepted > 0); /* weights, fitness values... are free */
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+/* ---- values the checksum cannot vouch for ----
+ * A checkpoint whose CRC is right can still hold state no run can reach.
+ * The counters and delta_t sit right after the PRNG state (docs/formats.md):
+ * found here through the PRNG bytes, so a layout change fails loudly. */
+static size_t state_offset(const neat_pop *pop, const uint8_t *buf, size_t len)
+{
+    uint8_t want[32];
+    size_t i, at = 0, hits = 0;
+    for (i = 0; i < 32; i++)
+        want[i] = (uint8_t)(pop->rng.s[i / 8] >> (8 * (i % 8)));
+    for (i = 12; i + 32 <= len; i++)
+        if (memcmp(buf + i, want, 32) == 0) {
+            at = i;
+            hits++;
+        }
+    assert_int_equal(hits, 1);
+    return at;
+}
+
+static void put_u32_at(uint8_t *buf, size_t at, uint32_t v)
+{
+    buf[at] = (uint8_t)v;
+    buf[at + 1] = (uint8_t)(v >> 8);
+    buf[at + 2] = (uint8_t)(v >> 16);
+    buf[at + 3] = (uint8_t)(v >> 24);
+}
+
+/* loads buf with bytes [at, at + n) replaced by val and the CRC recomputed;
+ * returns the load's result (the population, if any, is freed) */
+static int load_patched(const uint8_t *buf, size_t len, size_t at, const void *val, size_t n)
+{
+    uint8_t *copy = (uint8_t *)malloc(len);
+    neat_pop *out = NULL;
+    int err;
+    assert_non_null(copy);
+    memcpy(copy, buf, len);
+    memcpy(copy + at, val, n);
+    reseal(copy, len);
+    err = neat_pop_load(&out, copy, len, NULL, NULL);
+    neat_pop_free(out);
+    free(copy);
+    return err;
+}
+
+static void test_load_rejects_stale_counters(void **state)
+{
+    /* next innovation / node id / species id at or below ones in use: the
+     * loaded population hands out numbers that already mean something else
+     * (next_innov 0 or next_node 0 makes the very next neat_pop_epoch fail
+     * with NEAT_E_ARG; a stale species id duplicates a species).
+     * neat_pop_load checks them against every genome and species loaded. */
+    neat_pop *pop = evolved_pop(30, 5, 38);
+    uint8_t *buf, v[4];
+    size_t len, at;
+    int e_innov, e_node, e_species;
+    (void)state;
+    save(pop, &buf, &len);
+    at = state_offset(pop, buf, len) + 32;
+    /* sanity: the offsets found hold the counters */
+    put_u32_at(v, 0, neat_pop_innovations(pop));
+    assert_memory_equal(buf + at + 4, v, 4);
+    put_u32_at(v, 0, 0);
+    e_innov = load_patched(buf, len, at + 4, v, 4);
+    e_node = load_patched(buf, len, at + 8, v, 4);
+    e_species = load_patched(buf, len, at + 12, v, 4);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+    assert_int_equal(e_innov, NEAT_E_FORMAT);
+    assert_int_equal(e_node, NEAT_E_FORMAT);
+    assert_int_equal(e_species, NEAT_E_FORMAT);
+}
+
+static void test_load_rejects_bad_delta_t(void **state)
+{
+    /* a NaN threshold puts every genome in a species of its own for ever
+     * (NaN compares false, so neither speciation nor the delta_t_min floor
+     * ever act); a negative or infinite one is no threshold either.
+     * neat_pop_load range-checks the population's current delta_t (not
+     * only the parameter, which neat_params_check covers). */
+    static const double bad[] = {NAN, -1.0, 0.0, INFINITY};
+    neat_pop *pop = evolved_pop(30, 5, 39);
+    uint8_t *buf, v[8];
+    size_t len, at, k, b;
+    int errs[4];
+    (void)state;
+    save(pop, &buf, &len);
+    at = state_offset(pop, buf, len) + 32 + 20;
+    for (k = 0; k < 4; k++) {
+        uint64_t bits;
+        memcpy(&bits, &bad[k], 8);
+        for (b = 0; b < 8; b++)
+            v[b] = (uint8_t)(bits >> (8 * b));
+        errs[k] = load_patched(buf, len, at, v, 8);
+    }
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+    for (k = 0; k < 4; k++)
+        if (errs[k] != NEAT_E_FORMAT)
+            fail_msg("delta_t %g: load returned %d", bad[k], errs[k]);
+}
+
+static void test_load_rejects_zero_rng_state(void **state)
+{
+    /* xoshiro256** never leaves the all-zero state: every draw is 0, and
+     * the run is silently frozen (no structural mutation ever again).
+     * neat_pop_load refuses that state. */
+    static const uint8_t zeros[32] = {0};
+    neat_pop *pop = evolved_pop(30, 5, 40);
+    uint8_t *buf;
+    size_t len, at;
+    int err;
+    (void)state;
+    save(pop, &buf, &len);
+    at = state_offset(pop, buf, len);
+    err = load_patched(buf, len, at, zeros, 32);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+    assert_int_equal(err, NEAT_E_FORMAT);
+}
+
+static void test_load_rejects_null_arguments(void **state)
+{
+    neat_pop *out = NULL;
+    (void)state;
+    assert_int_equal(neat_pop_load(NULL, (const uint8_t *)"x", 1, NULL, NULL), NEAT_E_ARG);
+    assert_int_equal(neat_pop_load(&out, NULL, 10, NULL, NULL), NEAT_E_ARG);
+    assert_int_equal(neat_pop_save(NULL, NULL, NULL), NEAT_E_ARG);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_resume_gives_same_run),
+        cmocka_unit_test(test_resume_mid_generation),
+        cmocka_unit_test(test_save_load_save_is_identity),
+        cmocka_unit_test(test_save_is_deterministic),
+        cmocka_unit_test(test_header_layout),
+        cmocka_unit_test(test_every_truncation_rejected),
+        cmocka_unit_test(test_single_byte_corruption_rejected),
+        cmocka_unit_test(test_bad_magic),
+        cmocka_unit_test(test_bad_version),
+        cmocka_unit_test(test_trailing_bytes_rejected),
+        cmocka_unit_test(test_resealed_corruption_never_crashes),
+        cmocka_unit_test(test_load_rejects_stale_counters),
+        cmocka_unit_test(test_load_rejects_bad_delta_t),
+        cmocka_unit_test(test_load_rejects_zero_rng_state),
+        cmocka_unit_test(test_load_rejects_null_arguments),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
