@@ -70,14 +70,17 @@ int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *pla
             goto nomem;
     }
     if (plan->n_new > 0) {
+        /* each array initialised as soon as it exists: the error path frees its entries */
         plan->members = (uint32_t **)neat_mem_realloc(a, NULL, 0, (size_t)plan->cap * sizeof(uint32_t *));
-        plan->reps = (neat_genome *)neat_mem_realloc(a, NULL, 0, (size_t)plan->cap * sizeof(neat_genome));
-        if (plan->members == NULL || plan->reps == NULL)
+        if (plan->members == NULL)
             goto nomem;
-        for (j = 0; j < plan->n_new; j++) {
+        for (j = 0; j < plan->n_new; j++)
             plan->members[j] = NULL;
+        plan->reps = (neat_genome *)neat_mem_realloc(a, NULL, 0, (size_t)plan->cap * sizeof(neat_genome));
+        if (plan->reps == NULL)
+            goto nomem;
+        for (j = 0; j < plan->n_new; j++)
             neat_genome_init(&plan->reps[j]);
-        }
         for (j = 0; j < plan->n_new; j++) {
             plan->members[j] = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)plan->count[ns + j] * sizeof(uint32_t));
             if (plan->members[j] == NULL || neat_genome_copy(&plan->reps[j], &gs[plan->founder[j]], a))
