@@ -1,7 +1,7 @@
 /* nrt_step.c - one synchronous fixed-point propagation per time step, and settling for feed-forward tasks. */
 #include <string.h>
 
-#include "nrt.h"
+#include "nrt_internal.h"
 
 void nrt_reset(nrt_net *net)
 {
@@ -19,9 +19,8 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
     uint32_t n_in = net->n_inputs, non_in = (uint32_t)net->n_nodes - n_in;
     uint32_t j, k = 0;
 
-    /* The inputs are part of the state the step reads (and of the next one). */
+    /* The inputs are part of the state this step reads. */
     memcpy(prev, inputs, 2u * n_in);
-    memcpy(next, inputs, 2u * n_in);
     for (j = 0; j < non_in; j++) {
         /* Q3.12 x Q1.15 = Q27 products (< 2^30); 64 bits hold the sum of the
          * at most 65535 connections a blob can give one node (< 2^46). */
@@ -29,7 +28,7 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
         uint32_t e = net->end[j];
         for (; k < e; k++)
             sum += (int32_t)w[k] * prev[src[k]];
-        next[n_in + j] = nrt_sigmoid(sum);
+        next[n_in + j] = nrt_sig_eval(sum);
     }
     net->cur ^= 1u;
     if (outputs != NULL)
