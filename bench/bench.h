@@ -17,6 +17,7 @@ typedef struct bench_cfg {
     uint32_t balance_steps;     /* 100000: a Markov solution / the non-Markov long test */
     uint32_t damping_steps;     /* 1000: non-Markov fitness window */
     uint32_t generalization_min;/* 200 of the 625 starts */
+    int verbose;                /* one line per generation on stderr */
 } bench_cfg;
 
 typedef struct bench_result {
@@ -34,5 +35,7 @@ int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res);
 int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result *res);
 /* the activation micro-benchmark: prints its figures, returns 0 */
 int bench_activation(uint64_t seed, double min_seconds);
+/* exactly `steps` steps of the 40- or 200-connection network, for callgrind */
+int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps);
 
 #endif /* BENCH_H */

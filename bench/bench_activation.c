@@ -160,6 +160,53 @@ static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double mi
     return 0;
 }
 
+int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps)
+{
+    /* exactly `steps` runtime steps of one network, nothing timed: under
+     * valgrind --tool=callgrind, nrt_step's instructions / steps / conns is
+     * a figure that does not depend on the machine's load */
+    neat_rng rng;
+    neat_genome g;
+    neat_params p = neat_params_default();
+    neat_phenotype ph;
+    nrt_q15 in[ACT_INPUTS + 1], out[ACT_OUTPUTS];
+    uint64_t s;
+    uint32_t j;
+    int err, sink = 0;
+    neat_rng_seed(&rng, seed);
+    p.n_inputs = ACT_INPUTS;
+    p.n_outputs = ACT_OUTPUTS;
+    if (conns == 40) {
+        err = act_genome(&g, 2, 40, &rng);
+    } else {
+        neat_genome scratch;
+        err = act_genome(&scratch, 2, 40, &rng); /* the same draws as bench_activation */
+        neat_genome_free(&scratch, NULL);
+        if (!err)
+            err = act_genome(&g, 20, 200, &rng);
+    }
+    neat_phenotype_init(&ph);
+    if (!err)
+        err = neat_phenotype_load(&ph, &g, &p);
+    if (err) {
+        fprintf(stderr, "neat_bench: activation: cannot build the test network (%s)\n", neat_strerror(err));
+        neat_genome_free(&g, NULL);
+        return 1;
+    }
+    for (j = 0; j <= ACT_INPUTS; j++)
+        in[j] = j == 0 ? NRT_ONE : neat_q15(neat_rng_uniform(&rng));
+    nrt_reset(&ph.net);
+    for (s = 0; s < steps; s++) {
+        in[1] = (nrt_q15)(in[1] ^ (nrt_q15)(s & 1));
+        nrt_step(&ph.net, in, out);
+        sink += out[0];
+    }
+    printf("%u connections: %llu steps done (output sum %d)\n", conns, (unsigned long long)steps, sink);
+    neat_phenotype_free(&ph);
+    neat_genome_free(&g, NULL);
+    return 0;
+}
+
 int bench_activation(uint64_t seed, double min_seconds)
 {
     neat_rng rng;

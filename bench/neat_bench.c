@@ -211,7 +211,8 @@ static int bench_evolve(const char *task, bench_cfg *cfg, int quiet)
 static void bench_usage(FILE *f)
 {
     fprintf(f, "usage: neat_bench xor|pole|pole-nv|activation [--runs N] [--seed S] [--threads T]\n"
-               "                  [--config FILE.ini] [--dump-config] [--quiet]\n"
+               "                  [--config FILE.ini] [--dump-config] [--quiet] [--verbose]\n"
+               "       neat_bench activation [--count-steps N --connections 40|200]\n"
                "Runs NEAT on a benchmark of the NEAT paper (Stanley & Miikkulainen 2002); the last line\n"
                "of stdout is a JSON summary. Defaults come from bench/<task>.ini.\n");
 }
@@ -235,8 +236,8 @@ int main(int argc, char **argv)
     bench_cfg cfg;
     const char *task, *config = NULL;
     char path[1024];
-    uint64_t runs = 0, threads = 0, seed = 1;
-    int i, have_seed = 0, have_runs = 0, have_threads = 0, quiet = 0, dump = 0;
+    uint64_t runs = 0, threads = 0, seed = 1, count_steps = 0, count_conns = 40;
+    int i, have_seed = 0, have_runs = 0, have_threads = 0, quiet = 0, dump = 0, verbose = 0;
 
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         bench_usage(argc < 2 ? stderr : stdout);
@@ -251,6 +252,10 @@ int main(int argc, char **argv)
         const char *a = argv[i];
         if (strcmp(a, "--quiet") == 0) {
             quiet = 1;
+            continue;
+        }
+        if (strcmp(a, "--verbose") == 0) {
+            verbose = 1;
             continue;
         }
         if (strcmp(a, "--dump-config") == 0) {
@@ -273,6 +278,14 @@ int main(int argc, char **argv)
             if (bench_parse_u64(a, argv[++i], 1024, &threads))
                 return 2;
             have_threads = 1;
+        } else if (strcmp(a, "--count-steps") == 0) {
+            if (bench_parse_u64(a, argv[++i], UINT64_MAX, &count_steps))
+                return 2;
+        } else if (strcmp(a, "--connections") == 0) {
+            if (bench_parse_u64(a, argv[++i], 200, &count_conns) || (count_conns != 40 && count_conns != 200)) {
+                fprintf(stderr, "neat_bench: --connections must be 40 or 200\n");
+                return 2;
+            }
         } else if (strcmp(a, "--config") == 0) {
             config = argv[++i];
         } else {
@@ -280,8 +293,11 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    if (strcmp(task, "activation") == 0)
+    if (strcmp(task, "activation") == 0) {
+        if (count_steps > 0)
+            return bench_activation_count(seed, (uint32_t)count_conns, count_steps);
         return bench_activation(seed, 0.5);
+    }
 
     memset(&cfg, 0, sizeof cfg);
     cfg.neat = neat_params_default();
@@ -301,6 +317,7 @@ int main(int argc, char **argv)
     if (have_threads)
         cfg.threads = (uint32_t)threads;
     cfg.seed = have_seed ? seed : 1;
+    cfg.verbose = verbose;
     if (dump) {
         printf("[bench]\n");
         neat_config_dump_keys(stdout, bench_keys, BENCH_N_KEYS, &cfg);

@@ -1,5 +1,7 @@
 /* task_pole.c - double pole balancing with velocities (Markov) and without (non-Markov, damping fitness). */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include "bench.h"
 #include "cartpole.h"
@@ -95,6 +97,58 @@ static uint32_t pole_generalization(neat_phenotype *ph, uint32_t steps)
     return ok;
 }
 
+/* Networks already put to the champion tests, by their blob's CRC-32: each
+ * generation tests the fittest genome not tested before, so a run whose best
+ * genome passes the damping test but not the others moves on to the next
+ * candidates (the C++ release likewise tests a different species'
+ * champion each generation). */
+typedef struct pole_tested {
+    uint32_t *crc;
+    size_t n, cap;
+} pole_tested;
+
+static int pole_was_tested(pole_tested *t, uint32_t crc)
+{
+    size_t i;
+    for (i = 0; i < t->n; i++)
+        if (t->crc[i] == crc)
+            return 1;
+    if (t->n == t->cap) {
+        size_t ncap = t->cap ? 2 * t->cap : 64;
+        uint32_t *nc = (uint32_t *)realloc(t->crc, ncap * sizeof(uint32_t));
+        if (nc == NULL)
+            return 0; /* cannot remember: test it again, which is only slower */
+        t->crc = nc;
+        t->cap = ncap;
+    }
+    t->crc[t->n++] = crc;
+    return 0;
+}
+
+/* The fittest genome (lowest index on ties) not put to the tests before,
+ * loaded into ph; -1 when every genome has been. skip[] is scratch. */
+static int pole_next_candidate(const neat_pop *pop, const neat_params *p, neat_phenotype *ph, pole_tested *t,
+                               uint8_t *skip, int *err)
+{
+    uint32_t i, n = neat_pop_size(pop);
+    for (i = 0; i < n; i++)
+        skip[i] = 0;
+    for (;;) {
+        int best = -1;
+        for (i = 0; i < n; i++)
+            if (!skip[i] && (best < 0 || neat_pop_genome(pop, i)->fitness > neat_pop_genome(pop, (uint32_t)best)->fitness))
+                best = (int)i;
+        if (best < 0)
+            return -1;
+        skip[best] = 1;
+        *err = neat_phenotype_load(ph, neat_pop_genome(pop, (uint32_t)best), p);
+        if (*err)
+            return -1;
+        if (!pole_was_tested(t, nrt_crc32(0, ph->blob, ph->blob_len)))
+            return best;
+    }
+}
+
 static void pole_record(bench_result *res, const neat_genome *g, uint64_t evals, uint32_t gen)
 {
     res->solved = 1;
@@ -112,11 +166,13 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
     uint64_t evals = 0;
     int err;
 
+    pole_tested tested = {NULL, 0, 0};
+    uint8_t *skip = (uint8_t *)malloc(cfg->neat.pop_size);
+
     res->solved = 0;
     neat_phenotype_init(&ph);
-    err = neat_pop_create(&pop, &cfg->neat, NULL, seed, NULL);
+    err = skip == NULL ? NEAT_E_NOMEM : neat_pop_create(&pop, &cfg->neat, NULL, seed, NULL);
     for (gen = 0; !err && gen < cfg->max_generations; gen++) {
-        uint32_t best = 0;
         double best_f = -1.0;
         n = neat_pop_size(pop);
         for (i = 0; i < n && !err && !res->solved; i++) {
@@ -135,25 +191,33 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
             } else {
                 f = pole_damping_fitness(&ph, cfg->damping_steps);
             }
-            if (f > best_f) {
+            if (f > best_f)
                 best_f = f;
-                best = i;
-            }
             err = neat_pop_set_fitness(pop, i, f);
         }
         if (!markov && !err) {
-            /* the generation's champion: long test, then generalisation */
-            const neat_genome *g = neat_pop_genome(pop, best);
+            /* this generation's candidate: long test, then generalisation */
+            int cand = pole_next_candidate(pop, &cfg->neat, &ph, &tested, skip, &err);
+            const neat_genome *g = cand >= 0 ? neat_pop_genome(pop, (uint32_t)cand) : NULL;
+            uint32_t steps = 0, gz = 0;
             cartpole c;
             cartpole_init(&c);
-            err = neat_phenotype_load(&ph, g, &cfg->neat);
-            if (!err && pole_balance(&ph, &c, 0, cfg->balance_steps) >= cfg->balance_steps) {
-                uint32_t gz = pole_generalization(&ph, 1000);
+            if (g != NULL)
+                steps = pole_balance(&ph, &c, 0, cfg->balance_steps);
+            if (g != NULL && steps >= cfg->balance_steps) {
+                gz = pole_generalization(&ph, 1000);
                 if (gz >= cfg->generalization_min) {
                     pole_record(res, g, evals, gen);
                     res->generalization = gz;
                 }
             }
+            if (cfg->verbose)
+                fprintf(stderr, "  seed %llu generation %u: best damping fitness %.4f, champion balanced %u steps, "
+                        "generalised %u/625, %u species\n", (unsigned long long)seed, gen, best_f, steps, gz,
+                        neat_pop_species_count(pop));
+        } else if (cfg->verbose && !err) {
+            fprintf(stderr, "  seed %llu generation %u: best fitness %.4f, %u species\n", (unsigned long long)seed,
+                    gen, best_f, neat_pop_species_count(pop));
         }
         if (res->solved || err)
             break;
@@ -167,6 +231,8 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
     }
     neat_phenotype_free(&ph);
     neat_pop_free(pop);
+    free(tested.crc);
+    free(skip);
     res->error = err;
     return err;
 }

@@ -35,7 +35,7 @@ typedef int16_t nrt_w12;
 #define NRT_ONE ((nrt_q15)32767)   /* the closest Q1.15 value to 1.0 */
 #define NRT_WEIGHT_FRAC_BITS 12
 #define NRT_WEIGHT_MAX 32767
-#define NRT_WEIGHT_MIN (-32768)
+#define NRT_WEIGHT_MIN (-32767) /* symmetric: -32768 is refused, so two products fit 32 bits */
 
 /* ---- blob layout (little endian, read byte by byte) -------------------- */
 #define NRT_MAGIC0 'N'
@@ -74,7 +74,8 @@ enum nrt_error {
     NRT_E_INDEX = -8,    /* a connection names a node out of range, or into an input */
     NRT_E_ORDER = -9,    /* connections not sorted by target */
     NRT_E_NOMEM = -10,   /* the caller's buffer is too small */
-    NRT_E_TRAILING = -11 /* more bytes than the header says */
+    NRT_E_TRAILING = -11, /* more bytes than the header says */
+    NRT_E_WEIGHT = -12    /* a weight of -32768 (outside the symmetric Q3.12 range) */
 };
 
 /* ---- state --------------------------------------------------------------
@@ -88,8 +89,8 @@ typedef struct nrt_net {
     uint16_t n_nodes;   /* inputs + outputs + hidden */
     uint16_t n_conns;
     uint16_t cur;       /* which of act[0], act[1] holds the current step */
-    uint8_t *src;       /* [n_conns] source node of each connection */
-    nrt_w12 *weight;    /* [n_conns] */
+    uint32_t *conn;     /* [n_conns] weight (low 16 bits, nrt_w12) | source node << 16:
+                           one load per connection in the step's inner loop */
     uint16_t *end;      /* [n_outputs + n_hidden] one past the last connection into each node */
     nrt_q15 *act[2];    /* [n_nodes] activations of the previous and next step */
 } nrt_net;

@@ -28,11 +28,11 @@ uint32_t nrt_crc32(uint32_t crc, const void *data, size_t len)
     return ~crc;
 }
 
-/* Memory nrt_load lays out: weights, ends and two activation arrays (all
- * 16-bit), then the one-byte sources; +1 to align a buffer of any address. */
+/* Memory nrt_load lays out: the 32-bit connection words, then the 16-bit
+ * ends and two activation arrays; +3 to align a buffer of any address. */
 static size_t nrt_mem_for(uint32_t nodes, uint32_t non_inputs, uint32_t conns)
 {
-    return 2u * conns + 2u * non_inputs + 4u * nodes + conns + 1u;
+    return 4u * conns + 2u * non_inputs + 4u * nodes + 3u;
 }
 
 int nrt_inspect(const uint8_t *blob, size_t len, size_t *blob_size, size_t *mem_required)
@@ -111,35 +111,34 @@ int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t me
             return NRT_E_INDEX;
         if (c[1] < prev_dst)
             return NRT_E_ORDER;
+        if (nrt_rd16(c + 2) == 0x8000u)
+            return NRT_E_WEIGHT;
         prev_dst = c[1];
     }
     if (mem_len < need)
         return NRT_E_NOMEM;
 
-    /* Everything checked: lay out the buffer (16-bit arrays first, 2-aligned). */
+    /* Everything checked: lay out the buffer (32-bit words first, 4-aligned). */
     net->n_inputs = (uint16_t)n_in;
     net->n_outputs = nrt_rd16(blob + NRT_OFF_OUTPUTS);
     net->n_hidden = nrt_rd16(blob + NRT_OFF_HIDDEN);
     net->n_nodes = (uint16_t)nodes;
     net->n_conns = (uint16_t)n_conns;
     m = (uint8_t *)mem;
-    m += (uintptr_t)m & 1u;
-    net->weight = (nrt_w12 *)(void *)m;
-    m += 2u * n_conns;
+    m += (4u - ((uintptr_t)m & 3u)) & 3u;
+    net->conn = (uint32_t *)(void *)m;
+    m += 4u * n_conns;
     net->end = (uint16_t *)(void *)m;
     m += 2u * (nodes - n_in);
     net->act[0] = (nrt_q15 *)(void *)m;
     m += 2u * nodes;
     net->act[1] = (nrt_q15 *)(void *)m;
-    m += 2u * nodes;
-    net->src = m;
 
     for (j = 0; j < nodes - n_in; j++)
         net->end[j] = 0;
     for (k = 0; k < n_conns; k++) {
         const uint8_t *c = blob + NRT_HEADER_SIZE + NRT_CONN_SIZE * k;
-        net->src[k] = c[0];
-        net->weight[k] = (nrt_w12)nrt_rd16(c + 2);
+        net->conn[k] = (uint32_t)nrt_rd16(c + 2) | ((uint32_t)c[0] << 16);
         net->end[c[1] - n_in] = (uint16_t)(k + 1);
     }
     /* a node with no incoming connection ends where the previous one did */
@@ -166,6 +165,7 @@ const char *nrt_strerror(int err)
     case NRT_E_ORDER: return "connections not sorted by target node";
     case NRT_E_NOMEM: return "buffer too small for this network";
     case NRT_E_TRAILING: return "bytes after the end of the blob";
+    case NRT_E_WEIGHT: return "weight -32768 outside the symmetric Q3.12 range";
     default: return "unknown error";
     }
 }

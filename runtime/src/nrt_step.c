@@ -13,26 +13,33 @@ void nrt_reset(nrt_net *net)
 void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
 {
     nrt_q15 *prev = net->act[net->cur];
-    nrt_q15 *next = net->act[net->cur ^ 1u];
-    const uint8_t *src = net->src;
-    const nrt_w12 *w = net->weight;
-    uint32_t n_in = net->n_inputs, non_in = (uint32_t)net->n_nodes - n_in;
-    uint32_t j, k = 0;
+    nrt_q15 *next = net->act[net->cur ^ 1u] + net->n_inputs;
+    const uint32_t *c = net->conn;
+    const uint16_t *end = net->end;
+    uint32_t j, non_in = (uint32_t)net->n_nodes - net->n_inputs;
 
     /* The inputs are part of the state this step reads. */
-    memcpy(prev, inputs, 2u * n_in);
+    memcpy(prev, inputs, 2u * net->n_inputs);
     for (j = 0; j < non_in; j++) {
         /* Q3.12 x Q1.15 = Q27 products (< 2^30); 64 bits hold the sum of the
          * at most 65535 connections a blob can give one node (< 2^46). */
         int64_t sum = 0;
-        uint32_t e = net->end[j];
-        for (; k < e; k++)
-            sum += (int32_t)w[k] * prev[src[k]];
-        next[n_in + j] = nrt_sig_eval(sum);
+        const uint32_t *stop = net->conn + end[j];
+        /* two products at a time in 32 bits: |w| <= 32767 (the loader
+         * refuses -32768) and |a| <= 32768 make each product < 2^30 - 2^15,
+         * so a pair cannot overflow */
+        for (; c + 1 < stop; c += 2)
+            sum += (int32_t)(int16_t)(c[0] & 0xFFFFu) * prev[c[0] >> 16] +
+                   (int32_t)(int16_t)(c[1] & 0xFFFFu) * prev[c[1] >> 16];
+        if (c < stop) {
+            sum += (int32_t)(int16_t)(*c & 0xFFFFu) * prev[*c >> 16];
+            c++;
+        }
+        next[j] = nrt_sig_eval(sum);
     }
     net->cur ^= 1u;
     if (outputs != NULL)
-        memcpy(outputs, next + n_in, 2u * net->n_outputs);
+        memcpy(outputs, next, 2u * net->n_outputs);
 }
 
 int nrt_settle(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs, int max_steps)
