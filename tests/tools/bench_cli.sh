@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# bench_cli.sh - neat_bench from the outside: bad configuration is refused with file:line, the
+# dumped configuration loads back unchanged, and the results do not depend on the thread count.
+set -euo pipefail
+bench=$1
+what=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+case "$what" in
+bad-config)
+  printf '[neat]\npop_size = 10\npop_sise = 10\n' > "$tmp/typo.ini"
+  set +e
+  msg=$("$bench" xor --config "$tmp/typo.ini" 2>&1 >/dev/null); rc=$?
+  set -e
+  [ "$rc" -eq 2 ] || { echo "exit $rc, expected 2"; exit 1; }
+  echo "$msg" | grep -q "typo.ini:3: unknown key 'pop_sise' (did you mean 'pop_size'?)" || { echo "got: $msg"; exit 1; }
+  printf '[neat]\nc3 = -1\n' > "$tmp/range.ini"
+  set +e
+  msg=$("$bench" xor --config "$tmp/range.ini" 2>&1 >/dev/null); rc=$?
+  set -e
+  [ "$rc" -eq 2 ] && echo "$msg" | grep -q "range.ini:2: bad value '-1' for c3" || { echo "got $rc: $msg"; exit 1; }
+  printf '[nope]\nx = 1\n' > "$tmp/section.ini"
+  set +e
+  msg=$("$bench" xor --config "$tmp/section.ini" 2>&1 >/dev/null); rc=$?
+  set -e
+  [ "$rc" -eq 2 ] && echo "$msg" | grep -q "section.ini:2: unknown section \[nope\]" || { echo "got $rc: $msg"; exit 1; }
+  ;;
+dump-roundtrip)
+  for task in xor pole pole-nv; do
+    "$bench" "$task" --dump-config > "$tmp/a.ini"
+    "$bench" "$task" --config "$tmp/a.ini" --dump-config > "$tmp/b.ini"
+    cmp "$tmp/a.ini" "$tmp/b.ini"
+  done
+  ;;
+threads)
+  one=$("$bench" xor --runs 12 --threads 1 --quiet | tail -1 | sed 's/,"threads".*//')
+  two=$("$bench" xor --runs 12 --threads 2 --quiet | tail -1 | sed 's/,"threads".*//')
+  [ "$one" = "$two" ] || { echo "1 thread:  $one"; echo "2 threads: $two"; exit 1; }
+  echo "$one" | grep -q '"failures":0' || { echo "unexpected failures: $one"; exit 1; }
+  ;;
+*)
+  echo "unknown check $what"; exit 2 ;;
+esac
+echo "ok: $what"
