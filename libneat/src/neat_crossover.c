@@ -61,7 +61,7 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
             i++;
             j++;
         } else {
-            /* disjoint or excess: only the fitter parent's, at equal fitness either's at random */
+            /* disjoint or excess: only the fitter parent's, at equal fitness either's, drawn by the PRNG */
             int from_dad = j < dad->n_conns && (i >= mom->n_conns || dad->conns[j].innov < mom->conns[i].innov);
             const neat_conn *c = from_dad ? &dad->conns[j] : &mom->conns[i];
             int keep = better < 0 ? neat_rng_uniform(rng) < p->excess_equal_prob : better == from_dad;

@@ -192,7 +192,7 @@ int neat_pop_epoch(neat_pop *pop)
         err = neat_genome_copy(&ever, &pop->genomes[best], &pop->a);
     if (!err) {
         neat_apportion(pop, &since_pop);
-        /* the next generation's representatives: random members of this one
+        /* the next generation's representatives: members of this one drawn by the PRNG
          * (a retry draws the same ones from the restored PRNG) */
         for (k = 0; k < pop->n_species && !err; k++) {
             neat_species *s = &pop->species[k];
