@@ -10,6 +10,7 @@
 
 #define ACT_INPUTS 12 /* the duel's sensors (plus the bias) */
 #define ACT_OUTPUTS 3
+#define ACT_TRIALS 5  /* timed trials per network and implementation */
 
 static double act_now(void)
 {
@@ -97,7 +98,7 @@ static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double mi
     double din[ACT_INPUTS + 1], t0, t, sink = 0.0;
     uint64_t steps, s;
     uint32_t j;
-    int err;
+    int err, trial;
 
     p.n_inputs = ACT_INPUTS;
     p.n_outputs = ACT_OUTPUTS;
@@ -127,31 +128,39 @@ static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double mi
                 *max_diff = d;
         }
     }
-    /* speed: repeat until min_seconds have passed, 10000 steps at a time */
-    steps = 0;
-    t0 = act_now();
-    do {
-        for (s = 0; s < 10000; s++) {
-            in[1] = (nrt_q15)(in[1] ^ (nrt_q15)(s & 1));
-            nrt_step(&ph.net, in, out);
-        }
-        steps += 10000;
-        t = act_now() - t0;
-    } while (t < min_seconds);
-    sink += out[0];
-    *ns_fixed = t * 1e9 / ((double)steps * n_conns);
-    steps = 0;
-    t0 = act_now();
-    do {
-        for (s = 0; s < 10000; s++) {
-            din[1] += (s & 1) ? 1e-9 : -1e-9;
-            act_ref_step(&ref, din);
-        }
-        steps += 10000;
-        t = act_now() - t0;
-    } while (t < min_seconds);
-    sink += ref.act[ACT_INPUTS + 1];
-    *ns_double = t * 1e9 / ((double)steps * n_conns);
+    /* speed: ACT_TRIALS alternating trials of each, every trial 10000 steps
+     * at a time until min_seconds / ACT_TRIALS have passed; the fastest
+     * trial of each is reported (the machine is shared: slower trials
+     * measure the neighbours) */
+    *ns_fixed = *ns_double = 1e30;
+    for (trial = 0; trial < ACT_TRIALS; trial++) {
+        steps = 0;
+        t0 = act_now();
+        do {
+            for (s = 0; s < 10000; s++) {
+                in[1] = (nrt_q15)(in[1] ^ (nrt_q15)(s & 1));
+                nrt_step(&ph.net, in, out);
+            }
+            steps += 10000;
+            t = act_now() - t0;
+        } while (t < min_seconds / ACT_TRIALS);
+        sink += out[0];
+        if (t * 1e9 / ((double)steps * n_conns) < *ns_fixed)
+            *ns_fixed = t * 1e9 / ((double)steps * n_conns);
+        steps = 0;
+        t0 = act_now();
+        do {
+            for (s = 0; s < 10000; s++) {
+                din[1] += (s & 1) ? 1e-9 : -1e-9;
+                act_ref_step(&ref, din);
+            }
+            steps += 10000;
+            t = act_now() - t0;
+        } while (t < min_seconds / ACT_TRIALS);
+        sink += ref.act[ACT_INPUTS + 1];
+        if (t * 1e9 / ((double)steps * n_conns) < *ns_double)
+            *ns_double = t * 1e9 / ((double)steps * n_conns);
+    }
     if (sink == 12345.6789)
         printf("#\n"); /* keeps the loops' results alive */
     act_ref_free(&ref);
@@ -226,7 +235,8 @@ int bench_activation(uint64_t seed, double min_seconds)
            f200, d200, d200 / f200, e200);
     printf("{\"task\":\"activation\",\"ns_per_conn_step_40\":%.4f,\"ns_per_conn_step_200\":%.4f,"
            "\"double_ns_per_conn_step_40\":%.4f,\"double_ns_per_conn_step_200\":%.4f,"
-           "\"max_output_diff_40\":%.3e,\"max_output_diff_200\":%.3e,\"seconds_per_measure\":%.2f}\n",
-           f40, f200, d40, d200, e40, e200, min_seconds);
+           "\"max_output_diff_40\":%.3e,\"max_output_diff_200\":%.3e,\"seconds_per_measure\":%.2f,"
+           "\"trials\":%d}\n",
+           f40, f200, d40, d200, e40, e200, min_seconds, ACT_TRIALS);
     return 0;
 }
