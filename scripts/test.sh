@@ -21,7 +21,7 @@ cmake -S . -B build-arm -G Ninja -DCMAKE_TOOLCHAIN_FILE=cmake/arm-none-eabi.cmak
       -DCMAKE_BUILD_TYPE=MinSizeRel -DNEAT_RUNTIME_ONLY=ON >/dev/null
 ninja -C build-arm
 # Nothing but memcpy/memset from libc, and no floating-point helper.
-undef=$(arm-none-eabi-nm -u build-arm/libnrt.a | awk '{print $2}' | sort -u | grep -v '^nrt_' || true)
+undef=$(arm-none-eabi-nm -u build-arm/libnrt.a | awk '$1 == "U" {print $2}' | { grep -v '^nrt_' || true; } | sort -u | tr '\n' ' ')
 echo "runtime needs from outside: $undef"
 for s in $undef; do
   case "$s" in memcpy|memset) ;; *) echo "FAIL: the runtime needs $s"; exit 1;; esac
