@@ -1,0 +1,137 @@
+/* duel.h - the robot duel world of spec v1 (../shared/spec/duel-world.md) in fixed point: world, sensors, games, comparisons. */
+#ifndef DUEL_H
+#define DUEL_H
+
+/*
+ * Everything on the game path is integer arithmetic, so a game is the same
+ * bit for bit on every machine, compiler and thread count. The formats are
+ * written once, in docs/duelsim.md:
+ *   positions, distances, energies  int32 Q16.16 (DUEL_ONE = 1.0)
+ *   headings                        uint32 binary angle (2^32 = one turn, counter-clockwise from +x)
+ *   sensor values, motor outputs    nrt_q15 (Q1.15), as the runtime uses them
+ * Nothing here allocates; a world is a plain struct the caller owns.
+ */
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "nrt.h"
+
+#define DUEL_SPEC_VERSION 1
+
+/* ---- fixed point ---- */
+#define DUEL_ONE 65536                 /* Q16.16 */
+#define DUEL_FIX(v) ((int32_t)((v) * DUEL_ONE))
+typedef uint32_t duel_angle;           /* binary angle */
+#define DUEL_HALF_TURN 0x80000000u     /* pi */
+
+/* ---- the world (spec v1) ---- */
+#define DUEL_BOARD 600
+#define DUEL_RADIUS 10
+#define DUEL_MAX_STEPS 750
+#define DUEL_START_ENERGY 1200
+#define DUEL_FOOD_ENERGY 200
+#define DUEL_EAT_DIST 15
+#define DUEL_COLLIDE_DIST 20
+#define DUEL_TRAIN_FOOD 9
+#define DUEL_MAX_FOOD 11
+#define DUEL_CONFIGS 144               /* comparison food configurations */
+#define DUEL_TRAINING (-1)             /* food configuration: the 9 training items */
+#define DUEL_N_INPUTS 13               /* bias, 5 food, 5 robot, energy difference, wall */
+#define DUEL_N_OUTPUTS 3               /* turn left, turn right, forward */
+
+enum duel_side { DUEL_WEST = 0, DUEL_EAST = 1 };
+
+/* How a game ended (duel_result.outcome) and what happened in a step (duel_event.kind). */
+enum duel_outcome {
+    DUEL_RUNNING = 0,
+    DUEL_WEST_WINS = 1,  /* collision, west had more energy */
+    DUEL_EAST_WINS = 2,
+    DUEL_DRAW = 3,       /* collision at equal energy */
+    DUEL_TIMEOUT = 4     /* 750 steps without a collision */
+};
+
+enum duel_error {
+    DUEL_OK = 0,
+    DUEL_E_ARG = -1,     /* NULL, bad side, bad food configuration, bad builtin name */
+    DUEL_E_NET = -2      /* a network controller without the 13 inputs / 3 outputs */
+};
+
+typedef struct duel_robot {
+    int32_t x, y;        /* Q16.16, kept in [10, 590] */
+    duel_angle heading;
+    int32_t energy;      /* Q16.16 */
+    uint8_t eaten;       /* food items eaten (a shared item counts for both) */
+} duel_robot;
+
+typedef struct duel_world {
+    duel_robot robot[2];
+    int32_t food_x[DUEL_MAX_FOOD], food_y[DUEL_MAX_FOOD]; /* Q16.16 */
+    uint8_t n_food;
+    uint32_t food_mask;  /* bit i set while item i is on the board */
+    uint32_t t;          /* steps played */
+    int outcome;         /* enum duel_outcome */
+} duel_world;
+
+/* One step's events, for traces. */
+typedef struct duel_event {
+    uint32_t eaten_by[2]; /* bit i: the robot ate item i this step */
+    int outcome;          /* DUEL_RUNNING or how the game ended in this step */
+} duel_event;
+
+/* ---- world ---- */
+/* Start of a game on food configuration DUEL_TRAINING or 0..143. */
+int duel_world_init(duel_world *w, int food_config);
+/* The 13 inputs of robot `side` from the current state (spec order). */
+void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS]);
+/* One step with both robots' outputs (l, r, f): move, pay, eat, collide,
+ * time out. ev may be NULL. Returns the outcome (DUEL_RUNNING while on). */
+int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const nrt_q15 out_east[DUEL_N_OUTPUTS],
+                    duel_event *ev);
+
+/* ---- fixed-point geometry (duel_trig.c) ---- */
+/* cos and sin of a binary angle, Q2.30; exactly symmetric (cos(-a) = cos(a),
+ * cos(pi - a) = -cos(a), ...). Error against double: docs/duelsim.md. */
+void duel_cossin(duel_angle a, int32_t *c, int32_t *s);
+/* floor(sqrt(x)) */
+uint32_t duel_isqrt64(uint64_t x);
+
+/* ---- controllers ---- */
+enum duel_builtin { DUEL_IDLE = 0, DUEL_SPINNER, DUEL_FORAGER, DUEL_HUNTER, DUEL_FORAGER_HUNTER, DUEL_N_BUILTINS };
+
+typedef struct duel_controller {
+    nrt_net *net;        /* a loaded champion, or NULL for a builtin */
+    int builtin;         /* enum duel_builtin when net is NULL */
+} duel_controller;
+
+/* "idle", "spinner", ... -> enum duel_builtin, or DUEL_E_ARG. */
+int duel_builtin_parse(const char *name);
+const char *duel_builtin_name(int builtin);
+/* The builtin's outputs for these inputs (pure functions of the inputs). */
+void duel_builtin_act(int builtin, const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 out[DUEL_N_OUTPUTS]);
+
+/* ---- games ---- */
+typedef struct duel_result {
+    int outcome;         /* enum duel_outcome */
+    uint32_t steps;
+    int32_t energy[2];   /* final, Q16.16 */
+    uint8_t eaten[2];
+} duel_result;
+
+/* Called before each step's move: t, the state, both robots' inputs and outputs. */
+typedef void (*duel_trace_fn)(void *ud, const duel_world *w, const nrt_q15 in[2][DUEL_N_INPUTS],
+                              const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev);
+
+/* One game. Networks are reset first; the two controllers may not share one
+ * nrt_net (DUEL_E_ARG: load the blob twice). trace may be NULL; it is called
+ * once per step with the state before the move and that step's events. */
+int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
+              void *ud);
+
+/* The 288-game comparison: every configuration, a starting west then east. */
+typedef struct duel_tally {
+    uint32_t wins_a, wins_b, draws, timeouts;
+} duel_tally;
+int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally);
+
+#endif /* DUEL_H */

@@ -1,0 +1,87 @@
+/* duel_match.c - one game between two controllers, and the 288-game comparison of spec v1. */
+#include "duel.h"
+
+static void duel_act(duel_controller *c, const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 out[DUEL_N_OUTPUTS])
+{
+    if (c->net != NULL)
+        nrt_step(c->net, in, out);
+    else
+        duel_builtin_act(c->builtin, in, out);
+}
+
+static int duel_controller_ok(const duel_controller *c)
+{
+    if (c == NULL)
+        return 0;
+    if (c->net != NULL)
+        return c->net->n_inputs == DUEL_N_INPUTS && c->net->n_outputs == DUEL_N_OUTPUTS;
+    return c->builtin >= 0 && c->builtin < DUEL_N_BUILTINS;
+}
+
+int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
+              void *ud)
+{
+    duel_world w, before;
+    nrt_q15 in[2][DUEL_N_INPUTS], out[2][DUEL_N_OUTPUTS];
+    duel_event ev;
+    int err, side;
+
+    if (res == NULL || west == NULL || east == NULL)
+        return DUEL_E_ARG;
+    /* one network state cannot drive two robots: load the blob twice */
+    if (west->net != NULL && west->net == east->net)
+        return DUEL_E_ARG;
+    if (!duel_controller_ok(west) || !duel_controller_ok(east))
+        return DUEL_E_NET;
+    err = duel_world_init(&w, food_config);
+    if (err)
+        return err;
+    if (west->net != NULL)
+        nrt_reset(west->net);
+    if (east->net != NULL)
+        nrt_reset(east->net);
+    while (w.outcome == DUEL_RUNNING) {
+        /* 1. both sense the state at t; 2. both networks propagate once */
+        for (side = 0; side < 2; side++)
+            duel_sense(&w, side, in[side]);
+        duel_act(west, in[DUEL_WEST], out[DUEL_WEST]);
+        duel_act(east, in[DUEL_EAST], out[DUEL_EAST]);
+        if (trace != NULL)
+            before = w;
+        duel_world_step(&w, out[DUEL_WEST], out[DUEL_EAST], &ev);
+        if (trace != NULL)
+            trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in, (const nrt_q15(*)[DUEL_N_OUTPUTS])out, &ev);
+    }
+    res->outcome = w.outcome;
+    res->steps = w.t;
+    for (side = 0; side < 2; side++) {
+        res->energy[side] = w.robot[side].energy;
+        res->eaten[side] = w.robot[side].eaten;
+    }
+    return DUEL_OK;
+}
+
+int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
+{
+    int k, side, err;
+    duel_result r;
+    if (tally == NULL)
+        return DUEL_E_ARG;
+    tally->wins_a = tally->wins_b = tally->draws = tally->timeouts = 0;
+    for (k = 0; k < DUEL_CONFIGS; k++)
+        for (side = 0; side < 2; side++) {
+            /* side 0: a starts west; side 1: b starts west */
+            err = side == 0 ? duel_play(a, b, k, &r, NULL, NULL) : duel_play(b, a, k, &r, NULL, NULL);
+            if (err)
+                return err;
+            if (r.outcome == DUEL_DRAW)
+                tally->draws++;
+            else if (r.outcome == DUEL_TIMEOUT)
+                tally->timeouts++;
+            else if ((r.outcome == DUEL_WEST_WINS) == (side == 0))
+                tally->wins_a++;
+            else
+                tally->wins_b++;
+        }
+    return DUEL_OK;
+}

@@ -1,0 +1,106 @@
+/* duel_sense.c - the 13 sensors of spec v1: rangefinders by cross products (no trigonometry per object), energy, wall. */
+#include "duel_internal.h"
+
+/* Boundary k (k = 0..4) between sector k and sector k+1 (counter-clockwise)
+ * lies at heading + (2k + 1) * 36 degrees: binary angles (2k+1) 2^32 / 10,
+ * rounded. */
+static const uint32_t duel_boundary[5] = {429496730u, 1288490189u, 2147483648u, 3006477107u, 3865470566u};
+
+/* 1 - d / range in Q15 for a Q16.16 distance d: 32768 - d / units_per_step,
+ * units_per_step = range * 65536 / 32768, rounded to nearest */
+static nrt_q15 duel_range_value(uint32_t d, uint32_t units_per_step)
+{
+    int32_t v = 32768 - (int32_t)((d + units_per_step / 2) / units_per_step);
+    if (v > 32767)
+        v = 32767;
+    return (nrt_q15)(v < 0 ? 0 : v);
+}
+
+/* cross product z of two vectors (Q16.16 x Q30 -> Q46, < 2^57) */
+static int64_t duel_cross(int64_t ax, int64_t ay, int64_t bx, int64_t by)
+{
+    return ax * by - ay * bx;
+}
+
+/* Which sector the vector (vx, vy) from the robot lies in, or -1 for the
+ * zero vector. Sector k runs from boundary k-1 (inclusive: a bearing on a
+ * boundary belongs to the sector counter-clockwise of it) to boundary k. */
+static int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
+{
+    int k;
+    for (k = 0; k < 5; k++) {
+        int prev = (k + 4) % 5;
+        if (duel_cross(bx[prev], by[prev], vx, vy) >= 0 && duel_cross(vx, vy, bx[k], by[k]) > 0)
+            return k;
+    }
+    return -1;
+}
+
+/* Nearest squared distance per sector into best2[5] (INT64_MAX: none). */
+static void duel_scan(const duel_robot *r, const int32_t *ox, const int32_t *oy, uint32_t n, uint32_t mask,
+                      const int32_t bx[5], const int32_t by[5], int64_t best2[5])
+{
+    uint32_t i;
+    int k;
+    for (k = 0; k < 5; k++)
+        best2[k] = INT64_MAX;
+    for (i = 0; i < n; i++) {
+        int64_t vx, vy, d2;
+        if (!(mask & (1u << i)))
+            continue;
+        vx = (int64_t)ox[i] - r->x;
+        vy = (int64_t)oy[i] - r->y;
+        k = duel_sector(vx, vy, bx, by);
+        if (k < 0)
+            continue;
+        d2 = vx * vx + vy * vy;
+        if (d2 < best2[k])
+            best2[k] = d2;
+    }
+}
+
+/* distance along the heading to the first board edge, Q16.16 */
+static int64_t duel_wall_distance(const duel_robot *r, int32_t c, int32_t s)
+{
+    int64_t t = INT64_MAX, u;
+    if (c > 0)
+        t = (((int64_t)DUEL_FIX(DUEL_BOARD) - r->x) << 30) / c;
+    else if (c < 0)
+        t = (((int64_t)0 - r->x) << 30) / c;
+    if (s > 0)
+        u = (((int64_t)DUEL_FIX(DUEL_BOARD) - r->y) << 30) / s;
+    else if (s < 0)
+        u = (((int64_t)0 - r->y) << 30) / s;
+    else
+        u = INT64_MAX;
+    return u < t ? u : t;
+}
+
+void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
+{
+    const duel_robot *me = &w->robot[side], *other = &w->robot[side ^ 1];
+    int32_t bx[5], by[5], c, s;
+    int64_t best2[5], diff, wall;
+    int k;
+
+    for (k = 0; k < 5; k++)
+        duel_cossin(me->heading + duel_boundary[k], &bx[k], &by[k]);
+    in[0] = NRT_ONE;
+    /* food rangefinders 1-5: 1 - d / 850; 850 * 65536 / 32768 = 1700 Q16.16 units per Q15 step */
+    duel_scan(me, w->food_x, w->food_y, w->n_food, w->food_mask, bx, by, best2);
+    for (k = 0; k < 5; k++)
+        in[1 + k] = best2[k] == INT64_MAX ? 0 : duel_range_value(duel_isqrt64((uint64_t)best2[k]), 1700);
+    /* robot rangefinders 6-10 */
+    duel_scan(me, &other->x, &other->y, 1, 1u, bx, by, best2);
+    for (k = 0; k < 5; k++)
+        in[6 + k] = best2[k] == INT64_MAX ? 0 : duel_range_value(duel_isqrt64((uint64_t)best2[k]), 1700);
+    /* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units per Q15 step;
+     * symmetric rounding and a symmetric clamp, so the two robots read exact opposites */
+    diff = (int64_t)me->energy - other->energy;
+    diff = diff >= 0 ? (diff + 200) / 400 : -((-diff + 200) / 400);
+    in[11] = (nrt_q15)(diff > 32767 ? 32767 : (diff < -32767 ? -32767 : diff));
+    /* 12: wall, max(0, 1 - d / 200); 200 * 65536 / 32768 = 400 */
+    duel_cossin(me->heading, &c, &s);
+    wall = duel_wall_distance(me, c, s);
+    in[12] = wall >= (int64_t)DUEL_FIX(200) ? 0 : duel_range_value((uint32_t)wall, 400);
+}

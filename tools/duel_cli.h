@@ -1,0 +1,30 @@
+/* duel_cli.h - what the duel_evolve subcommands share: controllers from blob files or builtin names, traces. */
+#ifndef DUEL_CLI_H
+#define DUEL_CLI_H
+
+#include <stdio.h>
+
+#include "duel.h"
+
+/* A controller named on the command line: a blob file or builtin:NAME. */
+typedef struct duel_cli_ctrl {
+    duel_controller ctrl;
+    nrt_net net;
+    void *mem;
+    uint8_t *blob;
+    char name[256];
+} duel_cli_ctrl;
+
+/* Loads spec into c; on error prints one line naming the problem to stderr
+ * and returns -1. */
+int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec);
+void duel_cli_ctrl_close(duel_cli_ctrl *c);
+
+/* The CSV trace of docs/duelsim.md: header, then one row per step. */
+void duel_trace_header(FILE *f);
+void duel_trace_row(void *file, const duel_world *w, const nrt_q15 in[2][DUEL_N_INPUTS],
+                    const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev);
+
+int duel_cmd_play(int argc, char **argv);
+
+#endif /* DUEL_CLI_H */

@@ -1,0 +1,78 @@
+/* duel_ctrl.c - a controller from the command line: a champion blob file (validated by the runtime) or builtin:NAME. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "duel_cli.h"
+
+#define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
+
+int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
+{
+    FILE *f;
+    long size;
+    size_t need;
+    int err;
+
+    memset(c, 0, sizeof *c);
+    snprintf(c->name, sizeof c->name, "%s", spec);
+    if (strncmp(spec, "builtin:", 8) == 0) {
+        int b = duel_builtin_parse(spec + 8);
+        if (b < 0) {
+            fprintf(stderr, "duel_evolve: %s: unknown builtin (idle, spinner, forager, hunter, forager-hunter)\n", spec);
+            return -1;
+        }
+        c->ctrl.builtin = b;
+        return 0;
+    }
+    f = fopen(spec, "rb");
+    if (f == NULL) {
+        fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", spec, strerror(errno));
+        return -1;
+    }
+    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot read\n", spec);
+        fclose(f);
+        return -1;
+    }
+    if ((unsigned long)size > DUEL_BLOB_MAX) {
+        fprintf(stderr, "duel_evolve: %s: %ld bytes, larger than any champion blob\n", spec, size);
+        fclose(f);
+        return -1;
+    }
+    c->blob = (uint8_t *)malloc((size_t)size + 1);
+    if (c->blob == NULL || fread(c->blob, 1, (size_t)size, f) != (size_t)size) {
+        fprintf(stderr, "duel_evolve: %s: cannot read\n", spec);
+        fclose(f);
+        duel_cli_ctrl_close(c);
+        return -1;
+    }
+    fclose(f);
+    err = nrt_mem_required(c->blob, (size_t)size, &need);
+    if (!err) {
+        c->mem = malloc(need);
+        err = c->mem == NULL ? NRT_E_NOMEM : nrt_load(&c->net, c->blob, (size_t)size, c->mem, need);
+    }
+    if (err) {
+        fprintf(stderr, "duel_evolve: %s: not a valid champion blob: %s\n", spec, nrt_strerror(err));
+        duel_cli_ctrl_close(c);
+        return -1;
+    }
+    if (c->net.n_inputs != DUEL_N_INPUTS || c->net.n_outputs != DUEL_N_OUTPUTS) {
+        fprintf(stderr, "duel_evolve: %s: a network with %u inputs and %u outputs, not the duel's %d and %d\n", spec,
+                (unsigned)c->net.n_inputs, (unsigned)c->net.n_outputs, DUEL_N_INPUTS, DUEL_N_OUTPUTS);
+        duel_cli_ctrl_close(c);
+        return -1;
+    }
+    c->ctrl.net = &c->net;
+    return 0;
+}
+
+void duel_cli_ctrl_close(duel_cli_ctrl *c)
+{
+    free(c->blob);
+    free(c->mem);
+    c->blob = NULL;
+    c->mem = NULL;
+    c->ctrl.net = NULL;
+}

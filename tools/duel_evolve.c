@@ -1,0 +1,24 @@
+/* duel_evolve.c - the duel_evolve command: subcommand dispatch. */
+#include <stdio.h>
+#include <string.h>
+
+#include "duel_cli.h"
+
+static void duel_usage(FILE *f)
+{
+    fprintf(f, "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
+               "Robot duels of spec v%d (docs/duelsim.md).\n", DUEL_SPEC_VERSION);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+        duel_usage(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    if (strcmp(argv[1], "play") == 0)
+        return duel_cmd_play(argc - 2, argv + 2);
+    fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
+    duel_usage(stderr);
+    return 2;
+}

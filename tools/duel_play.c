@@ -1,0 +1,134 @@
+/* duel_play.c - `duel_evolve play A B`: one game, or the 288-game comparison, between two controllers. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "duel_cli.h"
+
+static void duel_play_usage(void)
+{
+    fprintf(stderr, "usage: duel_evolve play A B [--games 288 | --food K|training --side west|east] [--trace FILE.csv]\n"
+                    "  A, B: a champion blob file or builtin:NAME (idle, spinner, forager, hunter, forager-hunter)\n");
+}
+
+static const char *duel_outcome_text(int outcome)
+{
+    switch (outcome) {
+    case DUEL_WEST_WINS: return "west wins (collision, more energy)";
+    case DUEL_EAST_WINS: return "east wins (collision, more energy)";
+    case DUEL_DRAW: return "draw (collision at equal energy)";
+    case DUEL_TIMEOUT: return "timeout (no collision in 750 steps)";
+    default: return "unfinished";
+    }
+}
+
+int duel_cmd_play(int argc, char **argv)
+{
+    duel_cli_ctrl a, b;
+    const char *trace_path = NULL;
+    int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err;
+
+    if (argc < 2) {
+        duel_play_usage();
+        return 2;
+    }
+    for (i = 2; i < argc; i++) {
+        const char *opt = argv[i];
+        if (i + 1 >= argc) {
+            fprintf(stderr, "duel_evolve: play: %s needs a value\n", opt);
+            return 2;
+        }
+        if (strcmp(opt, "--games") == 0) {
+            if (strcmp(argv[++i], "288") != 0 && strcmp(argv[i], "1") != 0) {
+                fprintf(stderr, "duel_evolve: play: --games takes 1 or 288, not '%s'\n", argv[i]);
+                return 2;
+            }
+            games = atoi(argv[i]);
+        } else if (strcmp(opt, "--food") == 0) {
+            char *end;
+            const char *v = argv[++i];
+            long k;
+            if (strcmp(v, "training") == 0) {
+                food = DUEL_TRAINING;
+                continue;
+            }
+            errno = 0;
+            k = strtol(v, &end, 10);
+            if (*v == '\0' || *end != '\0' || errno || k < 0 || k >= DUEL_CONFIGS) {
+                fprintf(stderr, "duel_evolve: play: bad food configuration '%s' (0..143 or training)\n", v);
+                return 2;
+            }
+            food = (int)k;
+        } else if (strcmp(opt, "--side") == 0) {
+            const char *v = argv[++i];
+            if (strcmp(v, "west") != 0 && strcmp(v, "east") != 0) {
+                fprintf(stderr, "duel_evolve: play: --side takes west or east, not '%s'\n", v);
+                return 2;
+            }
+            a_west = strcmp(v, "west") == 0;
+        } else if (strcmp(opt, "--trace") == 0) {
+            trace_path = argv[++i];
+        } else {
+            fprintf(stderr, "duel_evolve: play: unknown option '%s'\n", opt);
+            duel_play_usage();
+            return 2;
+        }
+    }
+    if (games == 288 && trace_path != NULL) {
+        fprintf(stderr, "duel_evolve: play: --trace records one game, not the 288 of a comparison\n");
+        return 2;
+    }
+    if (duel_cli_ctrl_open(&a, argv[0]) != 0)
+        return 2;
+    if (duel_cli_ctrl_open(&b, argv[1]) != 0) {
+        duel_cli_ctrl_close(&a);
+        return 2;
+    }
+    if (games == 288) {
+        duel_tally t;
+        err = duel_compare(&a.ctrl, &b.ctrl, &t);
+        if (err) {
+            fprintf(stderr, "duel_evolve: play: comparison failed (%d)\n", err);
+            rc = 1;
+        } else {
+            printf("288 games (144 food configurations x 2 sides): A %s wins %u, B %s wins %u, draws %u, timeouts %u\n",
+                   a.name, t.wins_a, b.name, t.wins_b, t.draws, t.timeouts);
+            printf("%s\n", t.wins_a > t.wins_b ? "A is superior" : (t.wins_b > t.wins_a ? "B is superior" : "neither is superior"));
+        }
+    } else {
+        duel_result r;
+        FILE *tf = NULL;
+        if (trace_path != NULL) {
+            tf = fopen(trace_path, "w");
+            if (tf == NULL) {
+                fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", trace_path, strerror(errno));
+                duel_cli_ctrl_close(&a);
+                duel_cli_ctrl_close(&b);
+                return 2;
+            }
+            duel_trace_header(tf);
+        }
+        err = a_west ? duel_play(&a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, tf)
+                     : duel_play(&b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, tf);
+        if (tf != NULL && fclose(tf) != 0) {
+            fprintf(stderr, "duel_evolve: %s: write failed\n", trace_path);
+            rc = 1;
+        }
+        if (err) {
+            fprintf(stderr, "duel_evolve: play: game failed (%d)\n", err);
+            rc = 1;
+        } else {
+            const char *wname = a_west ? a.name : b.name, *ename = a_west ? b.name : a.name;
+            if (food < 0)
+                printf("training food, west %s, east %s\n", wname, ename);
+            else
+                printf("food configuration %d, west %s, east %s\n", food, wname, ename);
+            printf("%s after %u steps\n", duel_outcome_text(r.outcome), (unsigned)r.steps);
+            printf("energy: west %.6f, east %.6f; food eaten: west %u, east %u\n", r.energy[0] / 65536.0,
+                   r.energy[1] / 65536.0, (unsigned)r.eaten[0], (unsigned)r.eaten[1]);
+        }
+    }
+    duel_cli_ctrl_close(&a);
+    duel_cli_ctrl_close(&b);
+    return rc;
+}
