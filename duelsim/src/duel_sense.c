@@ -2,9 +2,18 @@
 #include "duel_internal.h"
 
 /* Boundary k (k = 0..4) between sector k and sector k+1 (counter-clockwise)
- * lies at heading + (2k + 1) * 36 degrees: binary angles (2k+1) 2^32 / 10,
- * rounded. */
-static const uint32_t duel_boundary[5] = {429496730u, 1288490189u, 2147483648u, 3006477107u, 3865470566u};
+ * lies at heading + (2k + 1) * 36 degrees. Its direction is the heading's
+ * unit vector rotated by these constants, round(2^30 cos), round(2^30 sin)
+ * of (2k + 1) * 36 degrees, with symmetric rounding: a mirror-image heading
+ * gets the mirror-image boundaries exactly. */
+static const int32_t duel_bcos[5] = {868675383, -331804471, -1073741824, -331804471, 868675383};
+static const int32_t duel_bsin[5] = {631129609, 1021189159, 0, -1021189159, -631129609};
+
+/* Sector for the set of boundaries v lies strictly clockwise of (bit k:
+ * cross(b_k, v) < 0): the k with bit k set and bit k-1 (cyclic) clear;
+ * -1 for the zero vector. */
+static const int8_t duel_sector_of[32] = {-1, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+                                          4,  4, 1, 4, 2, 2, 1, 4, 3, 3, 1, 3, 2, 2, 1, -1};
 
 /* 1 - d / range in Q15 for a Q16.16 distance d: 32768 - d / units_per_step,
  * units_per_step = range * 65536 / 32768, rounded to nearest */
@@ -16,24 +25,17 @@ static nrt_q15 duel_range_value(uint32_t d, uint32_t units_per_step)
     return (nrt_q15)(v < 0 ? 0 : v);
 }
 
-/* cross product z of two vectors (Q16.16 x Q30 -> Q46, < 2^57) */
-static int64_t duel_cross(int64_t ax, int64_t ay, int64_t bx, int64_t by)
-{
-    return ax * by - ay * bx;
-}
-
 /* Which sector the vector (vx, vy) from the robot lies in, or -1 for the
  * zero vector. Sector k runs from boundary k-1 (inclusive: a bearing on a
- * boundary belongs to the sector counter-clockwise of it) to boundary k. */
+ * boundary belongs to the sector counter-clockwise of it) to boundary k;
+ * five cross products (Q16.16 x Q30, < 2^57), no branch, no trigonometry. */
 static int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
 {
+    unsigned m = 0;
     int k;
-    for (k = 0; k < 5; k++) {
-        int prev = (k + 4) % 5;
-        if (duel_cross(bx[prev], by[prev], vx, vy) >= 0 && duel_cross(vx, vy, bx[k], by[k]) > 0)
-            return k;
-    }
-    return -1;
+    for (k = 0; k < 5; k++)
+        m |= (unsigned)((int64_t)bx[k] * vy - (int64_t)by[k] * vx < 0) << k;
+    return duel_sector_of[m];
 }
 
 /* Nearest squared distance per sector into best2[5] (INT64_MAX: none). */
@@ -83,8 +85,11 @@ void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
     int64_t best2[5], diff, wall;
     int k;
 
-    for (k = 0; k < 5; k++)
-        duel_cossin(me->heading + duel_boundary[k], &bx[k], &by[k]);
+    duel_cossin(me->heading, &c, &s);
+    for (k = 0; k < 5; k++) {
+        bx[k] = (int32_t)duel_round_shift((int64_t)c * duel_bcos[k] - (int64_t)s * duel_bsin[k], 30);
+        by[k] = (int32_t)duel_round_shift((int64_t)c * duel_bsin[k] + (int64_t)s * duel_bcos[k], 30);
+    }
     in[0] = NRT_ONE;
     /* food rangefinders 1-5: 1 - d / 850; 850 * 65536 / 32768 = 1700 Q16.16 units per Q15 step */
     duel_scan(me, w->food_x, w->food_y, w->n_food, w->food_mask, bx, by, best2);
@@ -100,7 +105,6 @@ void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
     diff = diff >= 0 ? (diff + 200) / 400 : -((-diff + 200) / 400);
     in[11] = (nrt_q15)(diff > 32767 ? 32767 : (diff < -32767 ? -32767 : diff));
     /* 12: wall, max(0, 1 - d / 200); 200 * 65536 / 32768 = 400 */
-    duel_cossin(me->heading, &c, &s);
     wall = duel_wall_distance(me, c, s);
     in[12] = wall >= (int64_t)DUEL_FIX(200) ? 0 : duel_range_value((uint32_t)wall, 400);
 }

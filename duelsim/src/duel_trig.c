@@ -168,18 +168,23 @@ void duel_cossin(duel_angle a, int32_t *c, int32_t *s)
 
 uint32_t duel_isqrt64(uint64_t x)
 {
-    /* bit by bit: exact floor, no floating point, no division */
-    uint64_t r = 0, bit = (uint64_t)1 << 62;
-    while (bit > x)
-        bit >>= 2;
-    while (bit != 0) {
-        if (x >= r + bit) {
-            x -= r + bit;
-            r = (r >> 1) + bit;
-        } else {
-            r >>= 1;
+    /* Newton's iteration from a power of two at or above the root: it
+     * decreases monotonically to floor(sqrt(x)) in a handful of steps */
+    uint64_t r, y = x;
+    int bits = 1, step;
+    if (x < 2)
+        return (uint32_t)x;
+    /* bit length by binary search */
+    for (step = 32; step > 0; step >>= 1)
+        if (y >> step) {
+            y >>= step;
+            bits += step;
         }
-        bit >>= 2;
+    r = (uint64_t)1 << ((bits + 1) / 2);
+    y = (r + x / r) >> 1;
+    while (y < r) {
+        r = y;
+        y = (r + x / r) >> 1;
     }
     return (uint32_t)r;
 }

@@ -1,0 +1,133 @@
+/* duel_bench.c - duel speed: game-steps per second with 39- and 202-connection networks, and 288-game comparisons per second. */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "duel.h"
+#include "neat.h"
+#include "neat_phenotype.h"
+
+static double db_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* A duel network with exactly n_conns connections: the minimal 13 x 3 = 39,
+ * or n_hidden hidden nodes and random (recurrent) connections up to n_conns. */
+static int db_genome(neat_genome *g, uint32_t n_hidden, uint32_t n_conns, neat_rng *rng)
+{
+    uint32_t i, nodes = DUEL_N_INPUTS + DUEL_N_OUTPUTS + n_hidden, innov;
+    int err = neat_genome_minimal(g, DUEL_N_INPUTS - 1, DUEL_N_OUTPUTS, NULL);
+    for (i = 0; !err && i < g->n_conns; i++)
+        g->conns[i].weight = (2.0 * neat_rng_uniform(rng) - 1.0) * 2.0;
+    for (i = 0; !err && i < n_hidden; i++)
+        err = neat_genome_add_node(g, DUEL_N_INPUTS + DUEL_N_OUTPUTS + i, NEAT_NODE_HIDDEN, NULL);
+    innov = g->n_conns;
+    while (!err && g->n_conns < n_conns) {
+        uint32_t s = neat_rng_below(rng, nodes), d = DUEL_N_INPUTS + neat_rng_below(rng, nodes - DUEL_N_INPUTS);
+        uint32_t k, dup = 0;
+        for (k = 0; k < g->n_conns; k++)
+            dup |= g->conns[k].in == s && g->conns[k].out == d;
+        if (!dup)
+            err = neat_genome_add_conn(g, s, d, (2.0 * neat_rng_uniform(rng) - 1.0) * 2.0, innov++, 1, NULL);
+    }
+    return err;
+}
+
+typedef struct db_pair {
+    neat_phenotype ph[2];
+    duel_controller c[2];
+} db_pair;
+
+static int db_pair_make(db_pair *p, uint32_t n_hidden, uint32_t n_conns, neat_rng *rng)
+{
+    neat_params prm = neat_params_default();
+    int s, err = 0;
+    prm.n_inputs = DUEL_N_INPUTS - 1;
+    prm.n_outputs = DUEL_N_OUTPUTS;
+    for (s = 0; s < 2 && !err; s++) {
+        neat_genome g;
+        neat_phenotype_init(&p->ph[s]);
+        err = db_genome(&g, n_hidden, n_conns, rng);
+        if (!err)
+            err = neat_phenotype_load(&p->ph[s], &g, &prm);
+        neat_genome_free(&g, NULL);
+        p->c[s].net = &p->ph[s].net;
+        p->c[s].builtin = 0;
+    }
+    return err;
+}
+
+/* games on every configuration and side until min_seconds have passed */
+static double db_steps_per_second(db_pair *p, double min_seconds, uint64_t *steps_out)
+{
+    uint64_t steps = 0;
+    double t0 = db_now(), t;
+    int k = 0;
+    do {
+        duel_result r;
+        duel_play(&p->c[k & 1], &p->c[(k + 1) & 1], (k / 2) % DUEL_CONFIGS, &r, NULL, NULL);
+        steps += r.steps;
+        k++;
+        t = db_now() - t0;
+    } while (t < min_seconds);
+    *steps_out = steps;
+    return (double)steps / t;
+}
+
+int main(int argc, char **argv)
+{
+    neat_rng rng;
+    db_pair p39, p202;
+    uint64_t steps39, steps202;
+    double sps39, sps202, t0, cmp_s;
+    duel_tally tally;
+    int callgrind_games = 0, i;
+
+    for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--callgrind") == 0 && i + 1 < argc) {
+            callgrind_games = atoi(argv[++i]);
+        } else {
+            fprintf(stderr, "usage: duel_bench [--callgrind GAMES]\n");
+            return 2;
+        }
+    }
+    neat_rng_seed(&rng, 2004);
+    if (db_pair_make(&p39, 0, 39, &rng) || db_pair_make(&p202, 20, 202, &rng)) {
+        fprintf(stderr, "duel_bench: cannot build the networks\n");
+        return 1;
+    }
+    if (callgrind_games > 0) {
+        /* fixed work, nothing timed: under valgrind --tool=callgrind, the
+         * instructions of duel_play divided by the robot-steps printed here
+         * give instructions per robot-step (sensing + network + motion) */
+        uint64_t robot_steps = 0;
+        for (i = 0; i < callgrind_games; i++) {
+            duel_result r;
+            duel_play(&p39.c[i & 1], &p39.c[(i + 1) & 1], (i / 2) % DUEL_CONFIGS, &r, NULL, NULL);
+            robot_steps += 2u * r.steps;
+        }
+        printf("{\"games\":%d,\"robot_steps\":%llu}\n", callgrind_games, (unsigned long long)robot_steps);
+        return 0;
+    }
+    sps39 = db_steps_per_second(&p39, 1.0, &steps39);
+    sps202 = db_steps_per_second(&p202, 1.0, &steps202);
+    t0 = db_now();
+    duel_compare(&p39.c[0], &p39.c[1], &tally);
+    cmp_s = db_now() - t0;
+    printf("39-connection networks:  %.0f game-steps/s (%.1f ns per robot-step)\n", sps39, 0.5e9 / sps39);
+    printf("202-connection networks: %.0f game-steps/s (%.1f ns per robot-step)\n", sps202, 0.5e9 / sps202);
+    printf("288-game comparison (39 connections): %.3f s, %.0f games/s (wins %u / %u, draws %u, timeouts %u)\n", cmp_s,
+           288.0 / cmp_s, tally.wins_a, tally.wins_b, tally.draws, tally.timeouts);
+    printf("{\"game_steps_per_s_39\":%.0f,\"game_steps_per_s_202\":%.0f,\"games_per_s_288\":%.1f,"
+           "\"comparison_seconds\":%.4f}\n", sps39, sps202, 288.0 / cmp_s, cmp_s);
+    for (i = 0; i < 2; i++) {
+        neat_phenotype_free(&p39.ph[i]);
+        neat_phenotype_free(&p202.ph[i]);
+    }
+    return 0;
+}
