@@ -9,12 +9,6 @@
 static const int32_t duel_bcos[5] = {868675383, -331804471, -1073741824, -331804471, 868675383};
 static const int32_t duel_bsin[5] = {631129609, 1021189159, 0, -1021189159, -631129609};
 
-/* Sector for the set of boundaries v lies strictly clockwise of (bit k:
- * cross(b_k, v) < 0): the k with bit k set and bit k-1 (cyclic) clear;
- * -1 for the zero vector. */
-static const int8_t duel_sector_of[32] = {-1, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
-                                          4,  4, 1, 4, 2, 2, 1, 4, 3, 3, 1, 3, 2, 2, 1, -1};
-
 /* 1 - d / range in Q15 for a Q16.16 distance d: 32768 - d / units_per_step,
  * units_per_step = range * 65536 / 32768, rounded to nearest */
 static nrt_q15 duel_range_value(uint32_t d, uint32_t units_per_step)
@@ -25,17 +19,31 @@ static nrt_q15 duel_range_value(uint32_t d, uint32_t units_per_step)
     return (nrt_q15)(v < 0 ? 0 : v);
 }
 
+/* Is v strictly clockwise of boundary k (cross(b_k, v) < 0), that is,
+ * within the half turn before it? */
+static int duel_cw_of(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5], int k)
+{
+    return (int64_t)bx[k] * vy - (int64_t)by[k] * vx < 0;
+}
+
 /* Which sector the vector (vx, vy) from the robot lies in, or -1 for the
  * zero vector. Sector k runs from boundary k-1 (inclusive: a bearing on a
- * boundary belongs to the sector counter-clockwise of it) to boundary k;
- * five cross products (Q16.16 x Q30, < 2^57), no branch, no trigonometry. */
+ * boundary belongs to the sector counter-clockwise of it) to boundary k
+ * (exclusive): v is not clockwise of b_{k-1} but clockwise of b_k. Three
+ * 64-bit cross products (Q16.16 x Q30 < 2^57), no trigonometry: boundary 2
+ * (straight behind) splits the left sectors 0-2 from the right ones 3, 4, 0. */
 static int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
 {
-    unsigned m = 0;
-    int k;
-    for (k = 0; k < 5; k++)
-        m |= (unsigned)((int64_t)bx[k] * vy - (int64_t)by[k] * vx < 0) << k;
-    return duel_sector_of[m];
+    if (vx == 0 && vy == 0)
+        return -1;
+    if (duel_cw_of(vx, vy, bx, by, 2)) {   /* bearing in (0, 180) degrees */
+        if (duel_cw_of(vx, vy, bx, by, 0)) /* (0, 36) */
+            return 0;
+        return duel_cw_of(vx, vy, bx, by, 1) ? 1 : 2;
+    }
+    if (duel_cw_of(vx, vy, bx, by, 3))     /* [180, 252) */
+        return 3;
+    return duel_cw_of(vx, vy, bx, by, 4) ? 4 : 0;
 }
 
 /* Nearest squared distance per sector into best2[5] (INT64_MAX: none). */
