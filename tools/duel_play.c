@@ -69,8 +69,7 @@ int duel_cmd_play(int argc, char **argv)
         } else if (strcmp(opt, "--trace") == 0) {
             trace_path = argv[++i];
         } else {
-            fprintf(stderr, "duel_evolve: play: unknown option '%s'\n", opt);
-            duel_play_usage();
+            fprintf(stderr, "duel_evolve: play: unknown option '%s' (see duel_evolve --help)\n", opt);
             return 2;
         }
     }
