@@ -16,7 +16,7 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DNEAT_SANITIZE=ON >/
 ninja -C build-asan
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
-echo "== runtime for Cortex-M0+ (arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os)"
+echo "== runtime and duelsim for Cortex-M0+ (arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os)"
 cmake -S . -B build-arm -G Ninja -DCMAKE_TOOLCHAIN_FILE=cmake/arm-none-eabi.cmake \
       -DCMAKE_BUILD_TYPE=MinSizeRel -DNEAT_RUNTIME_ONLY=ON >/dev/null
 ninja -C build-arm
@@ -26,6 +26,12 @@ echo "runtime needs from outside: $undef"
 for s in $undef; do
   case "$s" in memcpy|memset) ;; *) echo "FAIL: the runtime needs $s"; exit 1;; esac
 done
+
+# duelsim: integer arithmetic only, so no floating-point helper may be linked.
+if arm-none-eabi-nm -u build-arm/libduelsim.a | grep -E '__aeabi_[fd]|__(add|sub|mul|div)[sd]f3|__float|__fix'; then
+  echo "FAIL: duelsim needs floating point on Cortex-M0+"; exit 1
+fi
+echo "duelsim links no floating-point helper"
 
 echo "== fuzzing the blob loader (libFuzzer, 60 s)"
 CC=clang cmake -S . -B build-fuzz -G Ninja -DNEAT_FUZZ=ON -DNEAT_TESTS=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
