@@ -16,6 +16,17 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DNEAT_SANITIZE=ON >/
 ninja -C build-asan
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
+echo "== identical duel traces from the -O2 and the -O0 sanitizer builds"
+for game in "builtin:forager-hunter builtin:forager --food 0" "builtin:forager builtin:forager-hunter --food 77 --side east" \
+            "builtin:hunter builtin:forager-hunter"; do
+  # shellcheck disable=SC2086
+  ./build/bin/duel_evolve play $game --trace build/trace-o2.csv > /dev/null
+  # shellcheck disable=SC2086
+  ./build-asan/bin/duel_evolve play $game --trace build/trace-o0.csv > /dev/null
+  cmp build/trace-o2.csv build/trace-o0.csv
+done
+echo "traces identical"
+
 echo "== runtime and duelsim for Cortex-M0+ (arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os)"
 cmake -S . -B build-arm -G Ninja -DCMAKE_TOOLCHAIN_FILE=cmake/arm-none-eabi.cmake \
       -DCMAKE_BUILD_TYPE=MinSizeRel -DNEAT_RUNTIME_ONLY=ON >/dev/null
