@@ -72,17 +72,18 @@ static void duel_scan(const duel_robot *r, const int32_t *ox, const int32_t *oy,
 /* distance along the heading to the first board edge, Q16.16 */
 static int64_t duel_wall_distance(const duel_robot *r, int32_t c, int32_t s)
 {
-    int64_t t = INT64_MAX, u;
+    /* (edge - x) / cos with cos in Q30: multiply (not shift: the left shift
+     * of a negative value is undefined) */
+    const int64_t q30 = (int64_t)1 << 30;
+    int64_t t = INT64_MAX, u = INT64_MAX;
     if (c > 0)
-        t = (((int64_t)DUEL_FIX(DUEL_BOARD) - r->x) << 30) / c;
+        t = ((int64_t)DUEL_FIX(DUEL_BOARD) - r->x) * q30 / c;
     else if (c < 0)
-        t = (((int64_t)0 - r->x) << 30) / c;
+        t = -(int64_t)r->x * q30 / c;
     if (s > 0)
-        u = (((int64_t)DUEL_FIX(DUEL_BOARD) - r->y) << 30) / s;
+        u = ((int64_t)DUEL_FIX(DUEL_BOARD) - r->y) * q30 / s;
     else if (s < 0)
-        u = (((int64_t)0 - r->y) << 30) / s;
-    else
-        u = INT64_MAX;
+        u = -(int64_t)r->y * q30 / s;
     return u < t ? u : t;
 }
 
