@@ -19,4 +19,7 @@ static inline int64_t duel_dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return dx * dx + dy * dy;
 }
 
+/* floor(sqrt(x)) in 32-bit arithmetic (duel_trig.c) */
+uint32_t duel_isqrt32(uint32_t x);
+
 #endif /* DUEL_INTERNAL_H */

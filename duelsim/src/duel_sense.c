@@ -19,6 +19,18 @@ static nrt_q15 duel_range_value(uint32_t d, uint32_t units_per_step)
     return (nrt_q15)(v < 0 ? 0 : v);
 }
 
+/* A rangefinder reading 1 - d / 850 from the exact squared distance d2
+ * (Q32): 32768 - round(d / 1700) with d in Q16.16 (850 * 65536 / 32768 =
+ * 1700). round(d / 1700) = (floor(2 d / 1700) + 1) / 2, and
+ * floor(2 d / 1700) = floor(sqrt(floor(d2 / 722500))) exactly (722500 =
+ * 1700^2 / 4); the quotient stays below 2^32 on the board (d < 849). */
+static nrt_q15 duel_range_reading(int64_t d2)
+{
+    uint32_t n = duel_isqrt32((uint32_t)((uint64_t)d2 / 722500u));
+    int32_t v = 32768 - (int32_t)((n + 1u) >> 1);
+    return (nrt_q15)(v > 32767 ? 32767 : v);
+}
+
 /* Is v strictly clockwise of boundary k (cross(b_k, v) < 0), that is,
  * within the half turn before it? */
 static int duel_cw_of(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5], int k)
@@ -100,14 +112,14 @@ void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
         by[k] = (int32_t)duel_round_shift((int64_t)c * duel_bsin[k] + (int64_t)s * duel_bcos[k], 30);
     }
     in[0] = NRT_ONE;
-    /* food rangefinders 1-5: 1 - d / 850; 850 * 65536 / 32768 = 1700 Q16.16 units per Q15 step */
+    /* food rangefinders 1-5: 1 - d / 850 */
     duel_scan(me, w->food_x, w->food_y, w->n_food, w->food_mask, bx, by, best2);
     for (k = 0; k < 5; k++)
-        in[1 + k] = best2[k] == INT64_MAX ? 0 : duel_range_value(duel_isqrt64((uint64_t)best2[k]), 1700);
+        in[1 + k] = best2[k] == INT64_MAX ? 0 : duel_range_reading(best2[k]);
     /* robot rangefinders 6-10 */
     duel_scan(me, &other->x, &other->y, 1, 1u, bx, by, best2);
     for (k = 0; k < 5; k++)
-        in[6 + k] = best2[k] == INT64_MAX ? 0 : duel_range_value(duel_isqrt64((uint64_t)best2[k]), 1700);
+        in[6 + k] = best2[k] == INT64_MAX ? 0 : duel_range_reading(best2[k]);
     /* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units per Q15 step;
      * symmetric rounding and a symmetric clamp, so the two robots read exact opposites */
     diff = (int64_t)me->energy - other->energy;

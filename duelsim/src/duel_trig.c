@@ -1,5 +1,5 @@
 /* duel_trig.c - fixed-point cos/sin of binary angles (quarter-wave table) and an exact integer square root. */
-#include "duel.h"
+#include "duel_internal.h"
 
 /* DUEL_SIN_Q[i] = round(2^30 sin(i pi / 2048)), i = 0..1024: a quarter wave
  * (tests/duelsim/test_trig.c recomputes every entry). */
@@ -187,4 +187,25 @@ uint32_t duel_isqrt64(uint64_t x)
         y = (r + x / r) >> 1;
     }
     return (uint32_t)r;
+}
+
+uint32_t duel_isqrt32(uint32_t x)
+{
+    /* the same iteration in 32 bits, from 2^ceil(bits/2) */
+    uint32_t r, y = x;
+    int bits = 1, step;
+    if (x < 2)
+        return x;
+    for (step = 16; step > 0; step >>= 1)
+        if (y >> step) {
+            y >>= step;
+            bits += step;
+        }
+    r = (uint32_t)1 << ((bits + 1) / 2);
+    y = (r + x / r) >> 1;
+    while (y < r) {
+        r = y;
+        y = (r + x / r) >> 1;
+    }
+    return r;
 }

@@ -78,6 +78,14 @@ static void duel_move(duel_robot *r, const nrt_q15 out[DUEL_N_OUTPUTS])
     r->energy -= turn_cost + dist;
 }
 
+/* within the eating distance on both axes (necessary, not sufficient) */
+static int duel_near(const duel_robot *r, int32_t x, int32_t y)
+{
+    int32_t dx = r->x - x, dy = r->y - y;
+    return dx < DUEL_FIX(DUEL_EAT_DIST) && dx > -DUEL_FIX(DUEL_EAT_DIST) && dy < DUEL_FIX(DUEL_EAT_DIST) &&
+           dy > -DUEL_FIX(DUEL_EAT_DIST);
+}
+
 int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const nrt_q15 out_east[DUEL_N_OUTPUTS],
                     duel_event *ev)
 {
@@ -102,6 +110,9 @@ int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const
         int64_t da, db;
         int ea, eb;
         if (!(w->food_mask & (1u << i)))
+            continue;
+        /* most items are far from both robots: a box test spares the products */
+        if (!duel_near(a, w->food_x[i], w->food_y[i]) && !duel_near(b, w->food_x[i], w->food_y[i]))
             continue;
         da = duel_dist2(a->x, a->y, w->food_x[i], w->food_y[i]);
         db = duel_dist2(b->x, b->y, w->food_x[i], w->food_y[i]);
