@@ -87,12 +87,15 @@ int main(int argc, char **argv)
     double sps39, sps202, t0, cmp_s;
     duel_tally tally;
     int callgrind_games = 0, i;
+    const char *blob_dir = NULL;
 
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--callgrind") == 0 && i + 1 < argc) {
             callgrind_games = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--write-blobs") == 0 && i + 1 < argc) {
+            blob_dir = argv[++i];
         } else {
-            fprintf(stderr, "usage: duel_bench [--callgrind GAMES]\n");
+            fprintf(stderr, "usage: duel_bench [--callgrind GAMES] [--write-blobs DIR]\n");
             return 2;
         }
     }
@@ -100,6 +103,22 @@ int main(int argc, char **argv)
     if (db_pair_make(&p39, 0, 39, &rng) || db_pair_make(&p202, 20, 202, &rng)) {
         fprintf(stderr, "duel_bench: cannot build the networks\n");
         return 1;
+    }
+    if (blob_dir != NULL) {
+        /* the four benchmark networks as blob files (net39a/b, net202a/b.blob), for tests */
+        static const char *const names[4] = {"net39a", "net39b", "net202a", "net202b"};
+        for (i = 0; i < 4; i++) {
+            const neat_phenotype *ph = i < 2 ? &p39.ph[i] : &p202.ph[i - 2];
+            char path[1024];
+            FILE *f;
+            snprintf(path, sizeof path, "%s/%s.blob", blob_dir, names[i]);
+            f = fopen(path, "wb");
+            if (f == NULL || fwrite(ph->blob, 1, ph->blob_len, f) != ph->blob_len || fclose(f) != 0) {
+                fprintf(stderr, "duel_bench: %s: cannot write\n", path);
+                return 1;
+            }
+        }
+        return 0;
     }
     if (callgrind_games > 0) {
         /* fixed work, nothing timed: under valgrind --tool=callgrind, the

@@ -17,8 +17,12 @@ ninja -C build-asan
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
 echo "== identical duel traces from the -O2 and the -O0 sanitizer builds"
+mkdir -p build/nets
+./build/bin/duel_bench --write-blobs build/nets
 for game in "builtin:forager-hunter builtin:forager --food 0" "builtin:forager builtin:forager-hunter --food 77 --side east" \
-            "builtin:hunter builtin:forager-hunter"; do
+            "builtin:hunter builtin:forager-hunter" "build/nets/net39a.blob build/nets/net39b.blob --food 5" \
+            "build/nets/net202a.blob builtin:forager-hunter --food 140 --side east" \
+            "build/nets/net202b.blob build/nets/net39a.blob"; do
   # shellcheck disable=SC2086
   ./build/bin/duel_evolve play $game --trace build/trace-o2.csv > /dev/null
   # shellcheck disable=SC2086
