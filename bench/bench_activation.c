@@ -6,6 +6,7 @@
 #include <time.h>
 
 #include "bench.h"
+#include "bench_nets.h"
 #include "neat_phenotype.h"
 
 #define ACT_INPUTS 12 /* the duel's sensors (plus the bias) */
@@ -23,22 +24,7 @@ static double act_now(void)
  * pairs (self and backward connections included). */
 static int act_genome(neat_genome *g, uint32_t n_hidden, uint32_t n_conns, neat_rng *rng)
 {
-    uint32_t i, innov = 0, nodes = ACT_INPUTS + 1 + ACT_OUTPUTS + n_hidden;
-    int err = 0;
-    neat_genome_init(g);
-    for (i = 0; i < nodes && !err; i++)
-        err = neat_genome_add_node(g, i, i == 0 ? NEAT_NODE_BIAS : i <= ACT_INPUTS ? NEAT_NODE_INPUT
-                                             : i <= ACT_INPUTS + ACT_OUTPUTS ? NEAT_NODE_OUTPUT : NEAT_NODE_HIDDEN, NULL);
-    while (!err && g->n_conns < n_conns) {
-        uint32_t s = neat_rng_below(rng, nodes);
-        uint32_t d = ACT_INPUTS + 1 + neat_rng_below(rng, nodes - ACT_INPUTS - 1);
-        uint32_t k, dup = 0;
-        for (k = 0; k < g->n_conns; k++)
-            dup |= g->conns[k].in == s && g->conns[k].out == d;
-        if (!dup)
-            err = neat_genome_add_conn(g, s, d, (2.0 * neat_rng_uniform(rng) - 1.0) * 2.0, innov++, 1, NULL);
-    }
-    return err;
+    return bench_random_net(g, ACT_INPUTS, ACT_OUTPUTS, n_hidden, n_conns, 0, rng);
 }
 
 /* The straightforward double-precision network the ratio is measured against. */

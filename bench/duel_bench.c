@@ -7,6 +7,7 @@
 
 #include "duel.h"
 #include "neat.h"
+#include "bench_nets.h"
 #include "neat_phenotype.h"
 
 static double db_now(void)
@@ -17,25 +18,10 @@ static double db_now(void)
 }
 
 /* A duel network with exactly n_conns connections: the minimal 13 x 3 = 39,
- * or n_hidden hidden nodes and random (recurrent) connections up to n_conns. */
+ * plus n_hidden hidden nodes and random (recurrent) connections up to n_conns. */
 static int db_genome(neat_genome *g, uint32_t n_hidden, uint32_t n_conns, neat_rng *rng)
 {
-    uint32_t i, nodes = DUEL_N_INPUTS + DUEL_N_OUTPUTS + n_hidden, innov;
-    int err = neat_genome_minimal(g, DUEL_N_INPUTS - 1, DUEL_N_OUTPUTS, NULL);
-    for (i = 0; !err && i < g->n_conns; i++)
-        g->conns[i].weight = (2.0 * neat_rng_uniform(rng) - 1.0) * 2.0;
-    for (i = 0; !err && i < n_hidden; i++)
-        err = neat_genome_add_node(g, DUEL_N_INPUTS + DUEL_N_OUTPUTS + i, NEAT_NODE_HIDDEN, NULL);
-    innov = g->n_conns;
-    while (!err && g->n_conns < n_conns) {
-        uint32_t s = neat_rng_below(rng, nodes), d = DUEL_N_INPUTS + neat_rng_below(rng, nodes - DUEL_N_INPUTS);
-        uint32_t k, dup = 0;
-        for (k = 0; k < g->n_conns; k++)
-            dup |= g->conns[k].in == s && g->conns[k].out == d;
-        if (!dup)
-            err = neat_genome_add_conn(g, s, d, (2.0 * neat_rng_uniform(rng) - 1.0) * 2.0, innov++, 1, NULL);
-    }
-    return err;
+    return bench_random_net(g, DUEL_N_INPUTS - 1, DUEL_N_OUTPUTS, n_hidden, n_conns, 1, rng);
 }
 
 typedef struct db_pair {
