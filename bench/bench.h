@@ -30,6 +30,11 @@ typedef struct bench_result {
     int error;              /* a libneat or runtime error stopped the run */
 } bench_result;
 
+/* A run solved by g after evals evaluations, in generation gen (from 0). */
+void bench_solved(bench_result *res, const neat_genome *g, uint64_t evals, uint32_t gen);
+/* The end of a run: an unsolved run records what it spent. Returns err. */
+int bench_finish(bench_result *res, uint64_t evals, uint32_t generations, int err);
+
 /* One evolutionary run each; return 0 or an error code. */
 int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res);
 int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result *res);

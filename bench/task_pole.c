@@ -149,15 +149,6 @@ static int pole_next_candidate(const neat_pop *pop, const neat_params *p, neat_p
     }
 }
 
-static void pole_record(bench_result *res, const neat_genome *g, uint64_t evals, uint32_t gen)
-{
-    res->solved = 1;
-    res->evaluations = evals;
-    res->generations = gen + 1;
-    res->hidden_nodes = neat_genome_hidden_count(g);
-    res->connections = neat_genome_enabled_count(g);
-}
-
 int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result *res)
 {
     neat_pop *pop = NULL;
@@ -187,7 +178,7 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
                 cartpole_init(&c);
                 f = pole_balance(&ph, &c, 1, cfg->balance_steps);
                 if (f >= cfg->balance_steps)
-                    pole_record(res, g, evals, gen);
+                    bench_solved(res, g, evals, gen);
             } else {
                 f = pole_damping_fitness(&ph, cfg->damping_steps);
             }
@@ -207,7 +198,7 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
             if (g != NULL && steps >= cfg->balance_steps) {
                 gz = pole_generalization(&ph, 1000);
                 if (gz >= cfg->generalization_min) {
-                    pole_record(res, g, evals, gen);
+                    bench_solved(res, g, evals, gen);
                     res->generalization = gz;
                 }
             }
@@ -225,14 +216,9 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
             break;
         err = neat_pop_epoch(pop);
     }
-    if (!res->solved) {
-        res->evaluations = evals;
-        res->generations = gen;
-    }
     neat_phenotype_free(&ph);
     neat_pop_free(pop);
     free(tested.crc);
     free(skip);
-    res->error = err;
-    return err;
+    return bench_finish(res, evals, gen, err);
 }

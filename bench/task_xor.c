@@ -51,13 +51,8 @@ int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res)
             solved = xor_eval(&ph, &f);
             evals++;
             err = neat_pop_set_fitness(pop, i, f);
-            if (solved && !res->solved) {
-                res->solved = 1;
-                res->evaluations = evals;
-                res->generations = gen + 1;
-                res->hidden_nodes = neat_genome_hidden_count(g);
-                res->connections = neat_genome_enabled_count(g);
-            }
+            if (solved && !res->solved)
+                bench_solved(res, g, evals, gen);
         }
         if (res->solved || err)
             break;
@@ -65,12 +60,7 @@ int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res)
             break;
         err = neat_pop_epoch(pop);
     }
-    if (!res->solved) {
-        res->evaluations = evals;
-        res->generations = gen;
-    }
     neat_phenotype_free(&ph);
     neat_pop_free(pop);
-    res->error = err;
-    return err;
+    return bench_finish(res, evals, gen, err);
 }
