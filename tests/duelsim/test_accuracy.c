@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "duel.h"
+#include "duel_internal.h"
 
 #define ACC_SCENES 1000000
 static const double acc_pi = 3.14159265358979323846;
@@ -185,12 +186,36 @@ static void test_motion_matches_spec(void **state)
     assert_true(max_energy < 2.0 / 65536.0);
 }
 
+/* duel_isqrt32 is the exact floor: every value below 2^21, 10^7 random ones, the edges. */
+static void test_isqrt32_exact(void **state)
+{
+    static const uint32_t edges[] = {0xFFFFFFFFu, 0xFFFE0001u, 0xFFFE0000u, 1u << 30, (1u << 30) - 1u, 1u << 31,
+                                     65535u * 65535u, 65536u * 65535u, 3u, 4u};
+    uint32_t i, bad = 0;
+    (void)state;
+    for (i = 0; i < (1u << 21); i++) {
+        uint64_t r = duel_isqrt32(i);
+        bad += r * r > i || (r + 1) * (r + 1) <= i;
+    }
+    for (i = 0; i < 10000000u; i++) {
+        uint32_t v = (uint32_t)(acc_next() >> 32);
+        uint64_t r = duel_isqrt32(v);
+        bad += r * r > v || (r + 1) * (r + 1) <= v;
+    }
+    for (i = 0; i < sizeof edges / sizeof edges[0]; i++) {
+        uint64_t r = duel_isqrt32(edges[i]);
+        bad += r * r > edges[i] || (r + 1) * (r + 1) <= edges[i];
+    }
+    assert_int_equal(bad, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_food_rangefinders_match_spec),
         cmocka_unit_test(test_wall_sensor_matches_spec),
         cmocka_unit_test(test_motion_matches_spec),
+        cmocka_unit_test(test_isqrt32_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
