@@ -33,7 +33,7 @@ static nrt_q15 duel_range_reading(int64_t d2)
 
 /* Is v strictly clockwise of boundary k (cross(b_k, v) < 0), that is,
  * within the half turn before it? */
-static int duel_cw_of(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5], int k)
+static inline int duel_cw_of(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5], int k)
 {
     return (int64_t)bx[k] * vy - (int64_t)by[k] * vx < 0;
 }
@@ -44,7 +44,7 @@ static int duel_cw_of(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t
  * (exclusive): v is not clockwise of b_{k-1} but clockwise of b_k. Three
  * 64-bit cross products (Q16.16 x Q30 < 2^57), no trigonometry: boundary 2
  * (straight behind) splits the left sectors 0-2 from the right ones 3, 4, 0. */
-static int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
+static inline int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
 {
     if (vx == 0 && vy == 0)
         return -1;
@@ -107,19 +107,32 @@ void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
     int k;
 
     duel_cossin(me->heading, &c, &s);
-    for (k = 0; k < 5; k++) {
-        bx[k] = (int32_t)duel_round_shift((int64_t)c * duel_bcos[k] - (int64_t)s * duel_bsin[k], 30);
-        by[k] = (int32_t)duel_round_shift((int64_t)c * duel_bsin[k] + (int64_t)s * duel_bcos[k], 30);
+    /* boundaries k and 4-k are the heading rotated by +-(2k+1) 36 degrees:
+     * the same four products serve both; boundary 2 is -heading exactly */
+    for (k = 0; k < 2; k++) {
+        int64_t cc = (int64_t)c * duel_bcos[k], ss = (int64_t)s * duel_bsin[k];
+        int64_t cs = (int64_t)c * duel_bsin[k], sc = (int64_t)s * duel_bcos[k];
+        bx[k] = (int32_t)duel_round_shift(cc - ss, 30);
+        by[k] = (int32_t)duel_round_shift(cs + sc, 30);
+        bx[4 - k] = (int32_t)duel_round_shift(cc + ss, 30);
+        by[4 - k] = (int32_t)duel_round_shift(sc - cs, 30);
     }
+    bx[2] = -c;
+    by[2] = -s;
     in[0] = NRT_ONE;
     /* food rangefinders 1-5: 1 - d / 850 */
     duel_scan(me, w->food_x, w->food_y, w->n_food, w->food_mask, bx, by, best2);
     for (k = 0; k < 5; k++)
         in[1 + k] = best2[k] == INT64_MAX ? 0 : duel_range_reading(best2[k]);
-    /* robot rangefinders 6-10 */
-    duel_scan(me, &other->x, &other->y, 1, 1u, bx, by, best2);
+    /* robot rangefinders 6-10: one object, one sector */
     for (k = 0; k < 5; k++)
-        in[6 + k] = best2[k] == INT64_MAX ? 0 : duel_range_reading(best2[k]);
+        in[6 + k] = 0;
+    {
+        int64_t vx = (int64_t)other->x - me->x, vy = (int64_t)other->y - me->y;
+        k = duel_sector(vx, vy, bx, by);
+        if (k >= 0)
+            in[6 + k] = duel_range_reading(vx * vx + vy * vy);
+    }
     /* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units per Q15 step;
      * symmetric rounding and a symmetric clamp, so the two robots read exact opposites */
     diff = (int64_t)me->energy - other->energy;
