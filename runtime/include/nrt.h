@@ -89,8 +89,8 @@ typedef struct nrt_net {
     uint16_t n_nodes;   /* inputs + outputs + hidden */
     uint16_t n_conns;
     uint16_t cur;       /* which of act[0], act[1] holds the current step */
-    uint32_t *conn;     /* [n_conns] weight (low 16 bits, nrt_w12) | source node << 16:
-                           one load per connection in the step's inner loop */
+    nrt_w12 *weight;    /* [n_conns] */
+    uint16_t *src;      /* [n_conns] source node of each connection */
     uint16_t *end;      /* [n_outputs + n_hidden] one past the last connection into each node */
     nrt_q15 *act[2];    /* [n_nodes] activations of the previous and next step */
 } nrt_net;

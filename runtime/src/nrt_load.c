@@ -28,11 +28,12 @@ uint32_t nrt_crc32(uint32_t crc, const void *data, size_t len)
     return ~crc;
 }
 
-/* Memory nrt_load lays out: the 32-bit connection words, then the 16-bit
- * ends and two activation arrays; +3 to align a buffer of any address. */
+/* Memory nrt_load lays out, all 16-bit arrays: weights and sources of the
+ * connections, ends of each node's run, two activation arrays; +1 to align
+ * a buffer of any address. */
 static size_t nrt_mem_for(uint32_t nodes, uint32_t non_inputs, uint32_t conns)
 {
-    return 4u * conns + 2u * non_inputs + 4u * nodes + 3u;
+    return 4u * conns + 2u * non_inputs + 4u * nodes + 1u;
 }
 
 int nrt_inspect(const uint8_t *blob, size_t len, size_t *blob_size, size_t *mem_required)
@@ -118,16 +119,18 @@ int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t me
     if (mem_len < need)
         return NRT_E_NOMEM;
 
-    /* Everything checked: lay out the buffer (32-bit words first, 4-aligned). */
+    /* Everything checked: lay out the buffer (16-bit arrays, 2-aligned). */
     net->n_inputs = (uint16_t)n_in;
     net->n_outputs = nrt_rd16(blob + NRT_OFF_OUTPUTS);
     net->n_hidden = nrt_rd16(blob + NRT_OFF_HIDDEN);
     net->n_nodes = (uint16_t)nodes;
     net->n_conns = (uint16_t)n_conns;
     m = (uint8_t *)mem;
-    m += (4u - ((uintptr_t)m & 3u)) & 3u;
-    net->conn = (uint32_t *)(void *)m;
-    m += 4u * n_conns;
+    m += (uintptr_t)m & 1u;
+    net->weight = (nrt_w12 *)(void *)m;
+    m += 2u * n_conns;
+    net->src = (uint16_t *)(void *)m;
+    m += 2u * n_conns;
     net->end = (uint16_t *)(void *)m;
     m += 2u * (nodes - n_in);
     net->act[0] = (nrt_q15 *)(void *)m;
@@ -138,7 +141,8 @@ int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t me
         net->end[j] = 0;
     for (k = 0; k < n_conns; k++) {
         const uint8_t *c = blob + NRT_HEADER_SIZE + NRT_CONN_SIZE * k;
-        net->conn[k] = (uint32_t)nrt_rd16(c + 2) | ((uint32_t)c[0] << 16);
+        net->weight[k] = (nrt_w12)nrt_rd16(c + 2);
+        net->src[k] = c[0];
         net->end[c[1] - n_in] = (uint16_t)(k + 1);
     }
     /* a node with no incoming connection ends where the previous one did */

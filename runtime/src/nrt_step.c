@@ -14,26 +14,25 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
 {
     nrt_q15 *prev = net->act[net->cur];
     nrt_q15 *next = net->act[net->cur ^ 1u] + net->n_inputs;
-    const uint32_t *c = net->conn;
-    const uint16_t *end = net->end;
-    uint32_t j, non_in = (uint32_t)net->n_nodes - net->n_inputs;
+    const nrt_w12 *w = net->weight;
+    const uint16_t *src = net->src, *end = net->end;
+    uint32_t j, k = 0, non_in = (uint32_t)net->n_nodes - net->n_inputs;
 
     /* The inputs are part of the state this step reads. */
     memcpy(prev, inputs, 2u * net->n_inputs);
     for (j = 0; j < non_in; j++) {
         /* Q3.12 x Q1.15 = Q27 products (< 2^30); 64 bits hold the sum of the
-         * at most 65535 connections a blob can give one node (< 2^46). */
+         * at most 65535 connections a blob can give one node (< 2^46). Two
+         * products at a time in 32 bits: |w| <= 32767 (the loader refuses
+         * -32768) and |a| <= 32768 keep each below 2^30 - 2^15, so a pair
+         * cannot overflow. */
         int64_t sum = 0;
-        const uint32_t *stop = net->conn + end[j];
-        /* two products at a time in 32 bits: |w| <= 32767 (the loader
-         * refuses -32768) and |a| <= 32768 make each product < 2^30 - 2^15,
-         * so a pair cannot overflow */
-        for (; c + 1 < stop; c += 2)
-            sum += (int32_t)(int16_t)(c[0] & 0xFFFFu) * prev[c[0] >> 16] +
-                   (int32_t)(int16_t)(c[1] & 0xFFFFu) * prev[c[1] >> 16];
-        if (c < stop) {
-            sum += (int32_t)(int16_t)(*c & 0xFFFFu) * prev[*c >> 16];
-            c++;
+        uint32_t e = end[j];
+        for (; k + 1 < e; k += 2)
+            sum += (int32_t)w[k] * prev[src[k]] + (int32_t)w[k + 1] * prev[src[k + 1]];
+        if (k < e) {
+            sum += (int32_t)w[k] * prev[src[k]];
+            k++;
         }
         next[j] = nrt_sig_eval(sum);
     }

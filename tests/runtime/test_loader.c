@@ -83,13 +83,13 @@ static void test_inspect_sizes(void **state)
 {
     ld_blob s;
     size_t size = 0, mem = 0, mem2 = 0;
-    size_t arrays = 4u * LD_ENABLED + 2u * (LD_OUT + LD_HID) + 4u * LD_NODES; /* conn words, end, act[2] */
+    size_t arrays = 4u * LD_ENABLED + 2u * (LD_OUT + LD_HID) + 4u * LD_NODES; /* weight+src, end, act[2] */
     (void)state;
     ld_sample(&s);
     assert_int_equal(s.len, LD_SIZE);
     assert_int_equal(nrt_inspect(s.b, s.len, &size, &mem), NRT_OK);
     assert_int_equal(size, LD_SIZE);
-    assert_true(mem >= arrays && mem <= arrays + 3); /* at most three bytes of alignment slack */
+    assert_true(mem >= arrays && mem <= arrays + 1); /* at most one byte of alignment slack */
     assert_int_equal(nrt_mem_required(s.b, s.len, &mem2), NRT_OK);
     assert_int_equal(mem2, mem);
     /* the header alone is enough, and either output may be NULL */
@@ -184,12 +184,13 @@ static void test_odd_address(void **state)
     assert_int_equal(nrt_mem_required(s.b, s.len, &need), NRT_OK);
     memset(ld_mem, 0xA5, sizeof ld_mem);
     assert_int_equal(nrt_load(&net, s.b, s.len, buf, need), NRT_OK);
-    assert_int_equal((uintptr_t)net.conn & 3u, 0);
+    assert_int_equal((uintptr_t)net.weight & 1u, 0);
+    assert_int_equal((uintptr_t)net.src & 1u, 0);
     assert_int_equal((uintptr_t)net.end & 1u, 0);
     assert_int_equal((uintptr_t)net.act[0] & 1u, 0);
     assert_int_equal((uintptr_t)net.act[1] & 1u, 0);
     /* everything lies inside [buf, buf + need) */
-    assert_true((uint8_t *)net.conn >= buf);
+    assert_true((uint8_t *)net.weight >= buf);
     assert_true((uint8_t *)(net.act[1] + net.n_nodes) <= buf + need);
     nrt_step(&net, in, out);
     /* the byte after the buffer is untouched */
@@ -389,7 +390,8 @@ static void test_null_args(void **state)
     assert_int_equal(nrt_load(&net, s.b, s.len - 1, ld_mem, sizeof ld_mem), NRT_E_TRUNCATED);
     assert_int_equal(net.n_nodes, 0);
     assert_int_equal(net.n_conns, 0);
-    assert_null(net.conn);
+    assert_null(net.weight);
+    assert_null(net.src);
     assert_null(net.act[0]);
 }
 
