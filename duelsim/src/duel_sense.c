@@ -38,16 +38,15 @@ static inline int duel_cw_of(int64_t vx, int64_t vy, const int32_t bx[5], const 
     return (int64_t)bx[k] * vy - (int64_t)by[k] * vx < 0;
 }
 
-/* Which sector the vector (vx, vy) from the robot lies in, or -1 for the
- * zero vector. Sector k runs from boundary k-1 (inclusive: a bearing on a
+/* Which sector the non-zero vector (vx, vy) from the robot lies in (an
+ * object at the robot's very centre has no bearing and gives no reading;
+ * the callers skip it). Sector k runs from boundary k-1 (inclusive: a bearing on a
  * boundary belongs to the sector counter-clockwise of it) to boundary k
  * (exclusive): v is not clockwise of b_{k-1} but clockwise of b_k. Three
  * 64-bit cross products (Q16.16 x Q30 < 2^57), no trigonometry: boundary 2
  * (straight behind) splits the left sectors 0-2 from the right ones 3, 4, 0. */
 static inline int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
 {
-    if (vx == 0 && vy == 0)
-        return -1;
     if (duel_cw_of(vx, vy, bx, by, 2)) {   /* bearing in (0, 180) degrees */
         if (duel_cw_of(vx, vy, bx, by, 0)) /* (0, 36) */
             return 0;
@@ -72,10 +71,10 @@ static void duel_scan(const duel_robot *r, const int32_t *ox, const int32_t *oy,
             continue;
         vx = (int64_t)ox[i] - r->x;
         vy = (int64_t)oy[i] - r->y;
-        k = duel_sector(vx, vy, bx, by);
-        if (k < 0)
-            continue;
         d2 = vx * vx + vy * vy;
+        if (d2 == 0)
+            continue;
+        k = duel_sector(vx, vy, bx, by);
         if (d2 < best2[k])
             best2[k] = d2;
     }
@@ -129,9 +128,9 @@ void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
         in[6 + k] = 0;
     {
         int64_t vx = (int64_t)other->x - me->x, vy = (int64_t)other->y - me->y;
-        k = duel_sector(vx, vy, bx, by);
-        if (k >= 0)
-            in[6 + k] = duel_range_reading(vx * vx + vy * vy);
+        int64_t d2 = vx * vx + vy * vy;
+        if (d2 != 0)
+            in[6 + duel_sector(vx, vy, bx, by)] = duel_range_reading(d2);
     }
     /* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units per Q15 step;
      * symmetric rounding and a symmetric clamp, so the two robots read exact opposites */
