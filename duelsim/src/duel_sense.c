@@ -2,12 +2,13 @@
 #include "duel_internal.h"
 
 /* Boundary k (k = 0..4) between sector k and sector k+1 (counter-clockwise)
- * lies at heading + (2k + 1) * 36 degrees. Its direction is the heading's
- * unit vector rotated by these constants, round(2^30 cos), round(2^30 sin)
- * of (2k + 1) * 36 degrees, with symmetric rounding: a mirror-image heading
- * gets the mirror-image boundaries exactly. */
-static const int32_t duel_bcos[5] = {868675383, -331804471, -1073741824, -331804471, 868675383};
-static const int32_t duel_bsin[5] = {631129609, 1021189159, 0, -1021189159, -631129609};
+ * lies at heading + (2k + 1) * 36 degrees. Boundaries 0/4 and 1/3 are the
+ * heading's unit vector rotated by +-36 and +-108 degrees: these are
+ * round(2^30 cos), round(2^30 sin) of 36 and 108 degrees, applied with
+ * symmetric rounding so a mirror-image heading gets mirror-image boundaries
+ * exactly; boundary 2 is the heading reversed. */
+static const int32_t duel_bcos[2] = {868675383, -331804471};
+static const int32_t duel_bsin[2] = {631129609, 1021189159};
 
 /* 1 - d / range in Q15 for a Q16.16 distance d: 32768 - d / units_per_step,
  * units_per_step = range * 65536 / 32768, rounded to nearest */
