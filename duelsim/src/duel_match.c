@@ -1,4 +1,6 @@
 /* duel_match.c - one game between two controllers, and the 288-game comparison of spec v1. */
+#include <string.h>
+
 #include "duel.h"
 
 static void duel_act(duel_controller *c, const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 out[DUEL_N_OUTPUTS])
@@ -22,7 +24,7 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
               void *ud)
 {
     duel_world w, before;
-    nrt_q15 in[2][DUEL_N_INPUTS], out[2][DUEL_N_OUTPUTS];
+    nrt_q15 in_buf[2][DUEL_N_INPUTS], out[2][DUEL_N_OUTPUTS], *in[2];
     duel_event ev;
     int err, side;
 
@@ -42,15 +44,24 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         nrt_reset(east->net);
     while (w.outcome == DUEL_RUNNING) {
         /* 1. both sense the state at t; 2. both networks propagate once */
-        for (side = 0; side < 2; side++)
+        for (side = 0; side < 2; side++) {
+            /* a network's sensors go straight into its input slots */
+            duel_controller *c = side == DUEL_WEST ? west : east;
+            in[side] = c->net != NULL ? nrt_inputs(c->net) : in_buf[side];
             duel_sense(&w, side, in[side]);
+        }
         duel_act(west, in[DUEL_WEST], out[DUEL_WEST]);
         duel_act(east, in[DUEL_EAST], out[DUEL_EAST]);
         if (trace != NULL)
             before = w;
         duel_world_step(&w, out[DUEL_WEST], out[DUEL_EAST], &ev);
-        if (trace != NULL)
-            trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in, (const nrt_q15(*)[DUEL_N_OUTPUTS])out, &ev);
+        if (trace != NULL) {
+            /* the inputs this step used (the networks' slots now hold the next step's) */
+            for (side = 0; side < 2; side++)
+                if (in[side] != in_buf[side])
+                    memcpy(in_buf[side], in[side], sizeof in_buf[side]);
+            trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in_buf, (const nrt_q15(*)[DUEL_N_OUTPUTS])out, &ev);
+        }
     }
     res->outcome = w.outcome;
     res->steps = w.t;

@@ -32,51 +32,48 @@ static nrt_q15 duel_range_reading(int64_t d2)
     return (nrt_q15)(v > 32767 ? 32767 : v);
 }
 
-/* Is v strictly clockwise of boundary k (cross(b_k, v) < 0), that is,
- * within the half turn before it? */
-static inline int duel_cw_of(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5], int k)
+/* The sector of the non-zero vector (vx, vy) from the robot: the same
+ * decision tree as duel_scan's, for the one robot rangefinder object. */
+static int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
 {
-    return (int64_t)bx[k] * vy - (int64_t)by[k] * vx < 0;
+    if ((int64_t)bx[2] * vy < (int64_t)by[2] * vx)
+        return (int64_t)bx[0] * vy < (int64_t)by[0] * vx ? 0 : ((int64_t)bx[1] * vy < (int64_t)by[1] * vx ? 1 : 2);
+    return (int64_t)bx[3] * vy < (int64_t)by[3] * vx ? 3 : ((int64_t)bx[4] * vy < (int64_t)by[4] * vx ? 4 : 0);
 }
 
-/* Which sector the non-zero vector (vx, vy) from the robot lies in (an
- * object at the robot's very centre has no bearing and gives no reading;
- * the callers skip it). Sector k runs from boundary k-1 (inclusive: a bearing on a
- * boundary belongs to the sector counter-clockwise of it) to boundary k
- * (exclusive): v is not clockwise of b_{k-1} but clockwise of b_k. Three
- * 64-bit cross products (Q16.16 x Q30 < 2^57), no trigonometry: boundary 2
- * (straight behind) splits the left sectors 0-2 from the right ones 3, 4, 0. */
-static inline int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
-{
-    if (duel_cw_of(vx, vy, bx, by, 2)) {   /* bearing in (0, 180) degrees */
-        if (duel_cw_of(vx, vy, bx, by, 0)) /* (0, 36) */
-            return 0;
-        return duel_cw_of(vx, vy, bx, by, 1) ? 1 : 2;
-    }
-    if (duel_cw_of(vx, vy, bx, by, 3))     /* [180, 252) */
-        return 3;
-    return duel_cw_of(vx, vy, bx, by, 4) ? 4 : 0;
-}
-
-/* Nearest squared distance per sector into best2[5] (INT64_MAX: none). */
-static void duel_scan(const duel_robot *r, const int32_t *ox, const int32_t *oy, uint32_t n, uint32_t mask,
+/* Nearest squared distance per sector into best2[5] (INT64_MAX: none) over
+ * the items whose mask bit is set. Sector k runs from boundary k-1
+ * (inclusive: a bearing on a boundary belongs to the sector counter-clockwise
+ * of it) to boundary k (exclusive); v is clockwise of boundary k when
+ * cross(b_k, v) < 0. Two or three 64-bit cross products per object (Q16.16 x
+ * Q30 < 2^57), no trigonometry: boundary 2 (straight behind) splits the left
+ * sectors 0-2 from the right ones 3, 4, 0. The boundaries live in locals so
+ * the products take them from registers or as memory operands, and the
+ * robot's position is read once: this loop is the simulator's hot spot. */
+static void duel_scan(int32_t rx, int32_t ry, const int32_t *ox, const int32_t *oy, uint32_t mask,
                       const int32_t bx[5], const int32_t by[5], int64_t best2[5])
 {
+    const int64_t b0x = bx[0], b0y = by[0], b1x = bx[1], b1y = by[1], b2x = bx[2], b2y = by[2];
+    const int64_t b3x = bx[3], b3y = by[3], b4x = bx[4], b4y = by[4];
     uint32_t i;
     int k;
     for (k = 0; k < 5; k++)
         best2[k] = INT64_MAX;
-    for (i = 0; i < n; i++) {
+    for (i = 0; mask != 0; i++, mask >>= 1) {
         int64_t vx, vy, d2;
-        if (!(mask & (1u << i)))
+        if (!(mask & 1u))
             continue;
-        vx = (int64_t)ox[i] - r->x;
-        vy = (int64_t)oy[i] - r->y;
+        vx = (int64_t)ox[i] - rx;
+        vy = (int64_t)oy[i] - ry;
         d2 = vx * vx + vy * vy;
-        if (d2 == 0)
-            continue;
-        k = duel_sector(vx, vy, bx, by);
-        if (d2 < best2[k])
+        if (b2x * vy < b2y * vx)           /* bearing in (0, 180) degrees */
+            k = b0x * vy < b0y * vx ? 0 : (b1x * vy < b1y * vx ? 1 : 2);
+        else                               /* [180, 360] */
+            k = b3x * vy < b3y * vx ? 3 : (b4x * vy < b4y * vx ? 4 : 0);
+        /* an object at the robot's very centre has no bearing and gives no
+         * reading (it is classed as sector 0 above; d2 == 0 skips it here,
+         * off the common path) */
+        if (d2 < best2[k] && d2 != 0)
             best2[k] = d2;
     }
 }
@@ -121,7 +118,7 @@ void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
     by[2] = -s;
     in[0] = NRT_ONE;
     /* food rangefinders 1-5: 1 - d / 850 */
-    duel_scan(me, w->food_x, w->food_y, w->n_food, w->food_mask, bx, by, best2);
+    duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), bx, by, best2);
     for (k = 0; k < 5; k++)
         in[1 + k] = best2[k] == INT64_MAX ? 0 : duel_range_reading(best2[k]);
     /* robot rangefinders 6-10: one object, one sector */

@@ -189,10 +189,10 @@ uint32_t duel_isqrt64(uint64_t x)
     return (uint32_t)r;
 }
 
-/* DUEL_SQRT_EST[i - 64] = ceil(sqrt((i + 1) 2^24)), i = 64..255: an upper
- * bound of the square root of any 32-bit value whose top byte is i. */
-static const uint32_t duel_sqrt_est[192] = {
-    33024, 33277, 33528, 33777, 34024, 34270, 34514, 34756,
+/* duel_sqrt_est[j] = ceil(sqrt((64 + j) 2^24)), j = 0..192: the square
+ * roots at the edges of the 192 bins of top bytes 64..255. */
+const uint32_t duel_sqrt_est[193] = {
+    32768, 33024, 33277, 33528, 33777, 34024, 34270, 34514, 34756,
     34997, 35236, 35473, 35709, 35943, 36175, 36407, 36636,
     36864, 37091, 37317, 37541, 37764, 37985, 38205, 38424,
     38642, 38859, 39074, 39288, 39501, 39713, 39923, 40133,
@@ -217,36 +217,3 @@ static const uint32_t duel_sqrt_est[192] = {
     63588, 63719, 63851, 63982, 64113, 64244, 64374, 64504,
     64634, 64764, 64893, 65022, 65151, 65280, 65408, 65536,
 };
-
-uint32_t duel_isqrt32(uint32_t x)
-{
-    /* normalise to [2^30, 2^32) by an even shift, start from the table's
-     * upper bound (within 0.8 %), then Newton's iteration down to the floor */
-    uint32_t y = x, r, t;
-    int sh = 0;
-    if (x < 2)
-        return x;
-    if (y < (1u << 16)) {
-        y <<= 16;
-        sh += 16;
-    }
-    if (y < (1u << 24)) {
-        y <<= 8;
-        sh += 8;
-    }
-    if (y < (1u << 28)) {
-        y <<= 4;
-        sh += 4;
-    }
-    if (y < (1u << 30)) {
-        y <<= 2;
-        sh += 2;
-    }
-    r = (duel_sqrt_est[(y >> 24) - 64] >> (sh / 2)) + 1;
-    t = (r + x / r) >> 1;
-    while (t < r) {
-        r = t;
-        t = (r + x / r) >> 1;
-    }
-    return r;
-}

@@ -78,12 +78,12 @@ static void duel_move(duel_robot *r, const nrt_q15 out[DUEL_N_OUTPUTS])
     r->energy -= turn_cost + dist;
 }
 
-/* within the eating distance on both axes (necessary, not sufficient) */
+/* within the eating distance on both axes (necessary, not sufficient): one
+ * unsigned comparison per axis, |d| < E as (uint32_t)(d + E - 1) < 2E - 1 */
 static int duel_near(const duel_robot *r, int32_t x, int32_t y)
 {
-    int32_t dx = r->x - x, dy = r->y - y;
-    return dx < DUEL_FIX(DUEL_EAT_DIST) && dx > -DUEL_FIX(DUEL_EAT_DIST) && dy < DUEL_FIX(DUEL_EAT_DIST) &&
-           dy > -DUEL_FIX(DUEL_EAT_DIST);
+    const uint32_t e = (uint32_t)DUEL_FIX(DUEL_EAT_DIST);
+    return (uint32_t)r->x - (uint32_t)x + e - 1u < 2u * e - 1u && (uint32_t)r->y - (uint32_t)y + e - 1u < 2u * e - 1u;
 }
 
 int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const nrt_q15 out_east[DUEL_N_OUTPUTS],
@@ -109,7 +109,7 @@ int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const
     for (i = 0; i < w->n_food; i++) {
         int64_t da, db;
         int ea, eb;
-        if (!(w->food_mask & (1u << i)))
+        if (!((w->food_mask >> i) & 1u))
             continue;
         /* most items are far from both robots: a box test spares the products */
         if (!duel_near(a, w->food_x[i], w->food_y[i]) && !duel_near(b, w->food_x[i], w->food_y[i]))

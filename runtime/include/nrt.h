@@ -123,6 +123,11 @@ void nrt_reset(nrt_net *net);
  * n_inputs values, outputs receives n_outputs values (may be NULL). */
 void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs);
 
+/* The n_inputs slots the next nrt_step reads its inputs from: a caller may
+ * write the sensor values here and pass this pointer to nrt_step as inputs,
+ * sparing the copy (valid until that step). */
+nrt_q15 *nrt_inputs(nrt_net *net);
+
 /* For feed-forward tasks: steps with the same inputs until no activation
  * changes, at most max_steps times. Returns the number of steps taken, or
  * -1 if the network was still changing after max_steps (outputs then hold
