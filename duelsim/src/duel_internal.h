@@ -25,12 +25,14 @@ extern const uint32_t duel_sqrt_est[193];
 /* floor(sqrt(x)) in 32-bit arithmetic: inline, because every rangefinder
  * reading takes one. */
 /* Leading zero count of a non-zero 32-bit value, rounded down to even: the
- * compiler's instruction where there is one, a binary search elsewhere;
+ * compiler's builtin where the processor has the instruction (elsewhere the
+ * builtin would call a libgcc helper), a binary search otherwise;
  * both give the same number, so the square root below is the same
  * everywhere. */
 static inline unsigned duel_even_clz(uint32_t y)
 {
-#if defined(__GNUC__) || defined(__clang__)
+#if (defined(__GNUC__) || defined(__clang__)) && \
+    (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
     return (unsigned)__builtin_clz(y) & ~1u;
 #else
     unsigned sh = 0;
