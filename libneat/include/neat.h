@@ -228,6 +228,10 @@ uint32_t neat_pop_species_count(const neat_pop *pop);
 int neat_pop_species(const neat_pop *pop, uint32_t k, neat_species_info *info);
 double neat_pop_delta_t(const neat_pop *pop);
 uint32_t neat_pop_innovations(const neat_pop *pop); /* innovation numbers used so far */
+/* Changes the parameters of a running population (a resumed run's
+ * overrides). NEAT_E_PARAM if p is out of range or changes pop_size,
+ * n_inputs or n_outputs, or max_nodes is below a genome's size. */
+int neat_pop_set_params(neat_pop *pop, const neat_params *p);
 
 /* ---- checkpoints (docs/formats.md) --------------------------------------
  * The whole state: parameters, genomes, species, delta_t, innovation list,

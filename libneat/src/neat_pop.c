@@ -282,3 +282,21 @@ uint32_t neat_pop_innovations(const neat_pop *pop)
 {
     return pop->iv.next_innov;
 }
+
+int neat_pop_set_params(neat_pop *pop, const neat_params *p)
+{
+    const char *field;
+    uint32_t i;
+    if (pop == NULL || p == NULL)
+        return NEAT_E_ARG;
+    if (neat_params_check(p, &field) != NEAT_OK)
+        return NEAT_E_PARAM;
+    /* the genomes and species already there must still fit */
+    if (p->pop_size != pop->p.pop_size || p->n_inputs != pop->p.n_inputs || p->n_outputs != pop->p.n_outputs)
+        return NEAT_E_PARAM;
+    for (i = 0; i < pop->p.pop_size; i++)
+        if (pop->genomes[i].n_nodes > p->max_nodes)
+            return NEAT_E_PARAM;
+    pop->p = *p;
+    return NEAT_OK;
+}

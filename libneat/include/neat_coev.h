@@ -1,0 +1,124 @@
+/* neat_coev.h - competitive coevolution of two populations (hosts against parasites and a hall of fame) and the dominance tournament, over a caller's game. */
+#ifndef NEAT_COEV_H
+#define NEAT_COEV_H
+
+#include "neat.h"
+
+/*
+ * The protocol of Stanley & Miikkulainen (2004), section 5, as fixed by
+ * spec duel-world.md ("Coevolution protocol"); the game itself is the
+ * caller's, played through one batch callback:
+ *
+ *     neat_coev *c;
+ *     neat_coev_create(&c, &params, &coev_params, seed, NULL);
+ *     for (;;) {
+ *         neat_coev_report rep;
+ *         if (neat_coev_step(c, play_batch, my_data, &rep) != NEAT_OK) break;
+ *         ... rep.generation, rep.pop[0].best_fitness, rep.dominants ...
+ *     }
+ *
+ * Every game of a generation is known before any is played, and each
+ * carries a seed derived from (generation, population, host, opponent,
+ * side), so the callback may play them in any order on any number of
+ * threads: the run is the same.
+ */
+
+#define NEAT_COEV_CHECKPOINT_VERSION 1
+
+/* One game for the callback: a plays b. */
+typedef struct neat_game {
+    const neat_genome *a, *b;
+    int32_t config;   /* -1: the training configuration; 0..compare_configs-1: a comparison configuration */
+    uint8_t a_first;  /* 1: a takes the first starting side (the duel's west), 0: the second */
+    uint64_t seed;    /* for games with chance in them; the same whatever the thread */
+    int8_t result;    /* set by the callback: 1 a won, -1 b won, 0 neither (draw, timeout) */
+} neat_game;
+
+/* Plays n games, setting each result. Returns 0, or a negative code that
+ * stops the generation (the coevolution is then unchanged). */
+typedef int (*neat_play_fn)(void *ud, neat_game *games, size_t n);
+
+typedef struct neat_coev_params {
+    uint32_t species_opponents; /* 4: champions of the other population's best species (previous generation) */
+    uint32_t hof_opponents;     /* 8: drawn with replacement from its hall of fame */
+    uint32_t first_opponents;   /* 12: members drawn in generation 0, when there is no history */
+    uint32_t compare_configs;   /* 144: a comparison plays each configuration from both sides */
+} neat_coev_params;
+
+neat_coev_params neat_coev_params_default(void);
+/* NEAT_E_PARAM with *field naming the first bad one. */
+int neat_coev_params_check(const neat_coev_params *cp, const char **field);
+
+typedef struct neat_coev neat_coev;
+
+/* Two populations of p (both from seed, through different derived seeds). */
+int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp, uint64_t seed,
+                     const neat_alloc *alloc);
+void neat_coev_free(neat_coev *c);
+
+/* What one population did in a generation. Sizes are hidden nodes and
+ * enabled connections. */
+typedef struct neat_coev_pop_report {
+    double best_fitness, mean_fitness;
+    uint32_t best_index;       /* the best host (lowest index on ties) */
+    uint32_t species;
+    double delta_t;            /* the threshold this generation was speciated with */
+    double mean_hidden, mean_conns;
+    uint32_t best_hidden, best_conns;
+    uint64_t games;            /* its hosts' games */
+} neat_coev_pop_report;
+
+typedef struct neat_coev_report {
+    uint32_t generation;       /* the generation just played */
+    neat_coev_pop_report pop[2];
+    uint32_t champion_pop;     /* 0 or 1: whose best won the comparison (ties: 0) */
+    uint32_t champion_wins[2]; /* wins of population 0's and 1's best in that comparison */
+    uint32_t dominants;        /* dominance level after this generation */
+    int new_dominant;          /* 1 when the champion became dominant number `dominants` */
+    uint32_t dominance_games;  /* games of the dominance comparisons */
+    uint64_t games;            /* every game of the generation */
+} neat_coev_report;
+
+/* One generation: opponents, host games, fitness (wins), the comparison of
+ * the two bests, the hall of fame, the dominance tournament, reproduction.
+ * On an error from play or the allocator nothing changes, except after
+ * NEAT_E_NOMEM from the second population's epoch, which leaves the
+ * coevolution unusable (NEAT_E_STATE from then on): reload the last
+ * checkpoint. */
+int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *rep);
+
+uint32_t neat_coev_generation(const neat_coev *c); /* the next generation to play */
+uint64_t neat_coev_seed(const neat_coev *c);
+const neat_coev_params *neat_coev_get_params(const neat_coev *c);
+const neat_pop *neat_coev_pop(const neat_coev *c, uint32_t which);
+uint32_t neat_coev_hof_count(const neat_coev *c, uint32_t which);
+const neat_genome *neat_coev_hof(const neat_coev *c, uint32_t which, uint32_t generation);
+/* The last generation champion (NULL before the first generation). */
+const neat_genome *neat_coev_champion(const neat_coev *c);
+
+/* The dominance tournament: dominant k (0-based; level k + 1). */
+typedef struct neat_dominant {
+    uint32_t generation;
+    uint32_t pop;
+    const neat_genome *genome;
+    uint32_t n_beaten;         /* = k: it beat every earlier dominant */
+    const uint16_t *wins;      /* [n_beaten] its wins against dominant k-1, k-2, ..., 0 (the order played) */
+    const uint16_t *losses;    /* [n_beaten] that dominant's wins in the same comparison */
+} neat_dominant;
+uint32_t neat_coev_dominant_count(const neat_coev *c);
+int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d);
+
+/* New parameters for a resumed run: both populations' (pop_size, inputs and
+ * outputs cannot change) and the protocol's. */
+int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp);
+
+/* The whole state (docs/formats.md, "Coevolution checkpoint"): both
+ * populations, halls of fame, the species champions the next generation
+ * plays, the dominance tournament. Loading it and stepping on gives the same
+ * run as never stopping. */
+int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);
+void neat_coev_buf_free(const neat_coev *c, uint8_t *buf, size_t len);
+/* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
+int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+
+#endif /* NEAT_COEV_H */

@@ -1,0 +1,144 @@
+/* duel_files.c - atomic file replacement, whole-file reads, durable appends and CSV truncation for run directories. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "duel_files.h"
+
+static int duel_write_all(int fd, const void *data, size_t len)
+{
+    const char *p = (const char *)data;
+    while (len > 0) {
+        ssize_t w = write(fd, p, len);
+        if (w < 0) {
+            if (errno == EINTR)
+                continue;
+            return -1;
+        }
+        p += w;
+        len -= (size_t)w;
+    }
+    return 0;
+}
+
+int duel_file_replace(const char *path, const void *data, size_t len)
+{
+    char tmp[4200];
+    int fd, e;
+    if (snprintf(tmp, sizeof tmp, "%s.tmp", path) >= (int)sizeof tmp) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0)
+        return -1;
+    if (duel_write_all(fd, data, len) != 0 || fsync(fd) != 0) {
+        e = errno;
+        close(fd);
+        unlink(tmp);
+        errno = e;
+        return -1;
+    }
+    if (close(fd) != 0 || rename(tmp, path) != 0) {
+        e = errno;
+        unlink(tmp);
+        errno = e;
+        return -1;
+    }
+    return 0;
+}
+
+int duel_file_read(const char *path, uint8_t **data, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    uint8_t *buf = NULL;
+    size_t n = 0, cap = 0;
+    if (f == NULL)
+        return -1;
+    for (;;) {
+        size_t got;
+        if (n == cap) {
+            uint8_t *nb;
+            cap = cap ? cap * 2 : 65536;
+            nb = (uint8_t *)realloc(buf, cap);
+            if (nb == NULL) {
+                free(buf);
+                fclose(f);
+                errno = ENOMEM;
+                return -1;
+            }
+            buf = nb;
+        }
+        got = fread(buf + n, 1, cap - n, f);
+        n += got;
+        if (got == 0)
+            break;
+    }
+    if (ferror(f)) {
+        free(buf);
+        fclose(f);
+        errno = EIO;
+        return -1;
+    }
+    fclose(f);
+    *data = buf;
+    *len = n;
+    return 0;
+}
+
+int duel_file_append(const char *path, const char *text)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644), e;
+    if (fd < 0)
+        return -1;
+    if (duel_write_all(fd, text, strlen(text)) != 0 || fsync(fd) != 0) {
+        e = errno;
+        close(fd);
+        errno = e;
+        return -1;
+    }
+    return close(fd);
+}
+
+int duel_csv_keep_before(const char *path, uint32_t generation)
+{
+    uint8_t *data;
+    size_t len, at = 0, keep = 0;
+    int first = 1, r;
+    if (duel_file_read(path, &data, &len) != 0)
+        return errno == ENOENT ? 0 : -1;
+    while (at < len) {
+        const uint8_t *nl = (const uint8_t *)memchr(data + at, '\n', len - at);
+        size_t end;
+        if (nl == NULL)
+            break; /* a torn last row */
+        end = (size_t)(nl - data) + 1;
+        if (!first) {
+            char *stop;
+            unsigned long g = strtoul((const char *)data + at, &stop, 10);
+            if (stop == (const char *)data + at || *stop != ',' || g >= generation)
+                break;
+        }
+        first = 0;
+        keep = end;
+        at = end;
+    }
+    r = keep == len ? 0 : duel_file_replace(path, data, keep);
+    free(data);
+    return r;
+}
+
+int duel_mkdir(const char *path)
+{
+    struct stat st;
+    if (mkdir(path, 0755) == 0)
+        return 0;
+    if (errno == EEXIST && stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        return 0;
+    return -1;
+}

@@ -1,0 +1,26 @@
+/* duel_files.h - the file operations a run directory needs: atomic replacement, whole-file reads, CSV rows kept up to a generation. */
+#ifndef DUEL_FILES_H
+#define DUEL_FILES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Writes data to path through path.tmp, fsync and rename: a reader sees the
+ * old file or the new one, never a mix. 0 or -1 (errno set). */
+int duel_file_replace(const char *path, const void *data, size_t len);
+
+/* The whole file in a malloc'd buffer. 0 or -1 (errno set; ENOENT when missing). */
+int duel_file_read(const char *path, uint8_t **data, size_t *len);
+
+/* Appends text and flushes it to the disk. 0 or -1. */
+int duel_file_append(const char *path, const char *text);
+
+/* Keeps the header and the complete rows whose first field (a generation
+ * number) is below generation; drops the rest, including a torn last row.
+ * A missing file is fine. 0 or -1. */
+int duel_csv_keep_before(const char *path, uint32_t generation);
+
+/* mkdir that accepts an existing directory. 0 or -1. */
+int duel_mkdir(const char *path);
+
+#endif /* DUEL_FILES_H */

@@ -1,0 +1,605 @@
+/* duel_run.c - duel_evolve run, resume and config: a coevolution run in a run directory, checkpointed every generation. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "duel.h"
+#include "duel_cli.h"
+#include "duel_config.h"
+#include "duel_files.h"
+#include "duel_games.h"
+#include "neat_coev.h"
+
+/* Set by SIGINT/SIGTERM: the generation in progress finishes and is saved. */
+static volatile sig_atomic_t duel_stop = 0;
+
+static void duel_on_signal(int sig)
+{
+    (void)sig;
+    duel_stop = 1;
+}
+
+typedef struct duel_run {
+    const char *dir;
+    duel_config cfg;
+    neat_coev *coev;
+    duel_games *games;
+    uint32_t threads;
+    int quiet, json, tty;
+    double started;            /* monotonic seconds at this process's first generation */
+    uint32_t first_gen;        /* the generation this process started at */
+    uint32_t gen_in_flight;
+    int bar_shown;
+} duel_run;
+
+static double duel_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec / 1e9;
+}
+
+static void duel_path(char *out, size_t cap, const char *dir, const char *name)
+{
+    snprintf(out, cap, "%s/%s", dir, name);
+}
+
+/* One timestamped line in DIR/log.txt (and nothing else: the log is for people). */
+static void duel_log(const duel_run *R, const char *fmt, ...)
+{
+    char path[4200], line[1200], stamp[64];
+    time_t now = time(NULL);
+    struct tm tmv;
+    va_list ap;
+    size_t n;
+    gmtime_r(&now, &tmv);
+    strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", &tmv);
+    n = (size_t)snprintf(line, sizeof line, "%s ", stamp);
+    va_start(ap, fmt);
+    vsnprintf(line + n, sizeof line - n - 1, fmt, ap);
+    va_end(ap);
+    strcat(line, "\n");
+    duel_path(path, sizeof path, R->dir, "log.txt");
+    if (duel_file_append(path, line) != 0)
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+}
+
+static int duel_write_config(const duel_run *R)
+{
+    char path[4200], *text = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&text, &len);
+    int r;
+    if (mem == NULL)
+        return -1;
+    fprintf(mem, "; the effective configuration of this run (duel_evolve config --dump format)\n");
+    duel_config_dump(mem, &R->cfg);
+    fclose(mem);
+    duel_path(path, sizeof path, R->dir, "config.ini");
+    r = duel_file_replace(path, text, len);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    free(text);
+    return r;
+}
+
+static int duel_save_checkpoint(const duel_run *R)
+{
+    char path[4200];
+    uint8_t *buf;
+    size_t len;
+    int err = neat_coev_save(R->coev, &buf, &len), r;
+    if (err) {
+        fprintf(stderr, "duel_evolve: cannot build the checkpoint: %s\n", neat_strerror(err));
+        return -1;
+    }
+    duel_path(path, sizeof path, R->dir, "checkpoint.bin");
+    r = duel_file_replace(path, buf, len);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    neat_coev_buf_free(R->coev, buf, len);
+    return r;
+}
+
+static int duel_write_blob(const char *path, const neat_genome *g, const neat_params *p)
+{
+    size_t cap = neat_blob_size(g), len;
+    uint8_t *buf = (uint8_t *)malloc(cap);
+    int err, r;
+    if (buf == NULL)
+        return -1;
+    err = neat_blob_write(g, p->n_inputs, p->n_outputs, buf, cap, &len);
+    if (err) {
+        fprintf(stderr, "duel_evolve: %s: cannot encode: %s\n", path, neat_strerror(err));
+        free(buf);
+        return -1;
+    }
+    r = duel_file_replace(path, buf, len);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    free(buf);
+    return r;
+}
+
+static const char *duel_pop_name(uint32_t p)
+{
+    return p == 0 ? "A" : "B";
+}
+
+static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
+{
+    char path[4200], row[2000];
+    const neat_params *np = neat_pop_params(neat_coev_pop(R->coev, 0));
+    uint32_t p, k;
+    struct stat st;
+
+    snprintf(row, sizeof row, "champions/gen-%05u.blob", rep->generation);
+    duel_path(path, sizeof path, R->dir, row);
+    if (duel_write_blob(path, neat_coev_champion(R->coev), np) != 0)
+        return -1;
+
+    duel_path(path, sizeof path, R->dir, "generations.csv");
+    if (stat(path, &st) != 0 &&
+        duel_file_append(path, "generation,population,best_fitness,mean_fitness,species,delta_t,mean_hidden,"
+                               "mean_connections,best_hidden,best_connections,games,champion,seconds\n") != 0)
+        goto fail;
+    for (p = 0; p < 2; p++) {
+        const neat_coev_pop_report *pr = &rep->pop[p];
+        snprintf(row, sizeof row, "%u,%s,%.0f,%.4f,%u,%.4f,%.4f,%.4f,%u,%u,%llu,%d,%.3f\n", rep->generation,
+                 duel_pop_name(p), pr->best_fitness, pr->mean_fitness, pr->species, pr->delta_t, pr->mean_hidden,
+                 pr->mean_conns, pr->best_hidden, pr->best_conns, (unsigned long long)pr->games,
+                 rep->champion_pop == p, secs);
+        if (duel_file_append(path, row) != 0)
+            goto fail;
+    }
+
+    if (rep->new_dominant) {
+        neat_dominant d;
+        size_t n;
+        neat_coev_dominant(R->coev, rep->dominants - 1u, &d);
+        duel_path(path, sizeof path, R->dir, "dominance.csv");
+        if (stat(path, &st) != 0 &&
+            duel_file_append(path, "level,generation,population,hidden,connections,wins\n") != 0)
+            goto fail;
+        n = (size_t)snprintf(row, sizeof row, "%u,%u,%s,%u,%u,", rep->dominants, d.generation,
+                             duel_pop_name(d.pop), neat_genome_hidden_count(d.genome),
+                             neat_genome_enabled_count(d.genome));
+        /* "w:l" against d(n-1), d(n-2), ..., d1: the comparisons it won, in the order played */
+        for (k = 0; k < d.n_beaten && n + 16 < sizeof row; k++)
+            n += (size_t)snprintf(row + n, sizeof row - n, "%s%u:%u", k ? " " : "", d.wins[k], d.losses[k]);
+        snprintf(row + n, sizeof row - n, "\n");
+        if (duel_file_append(path, row) != 0)
+            goto fail;
+    }
+    return duel_save_checkpoint(R);
+fail:
+    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    return -1;
+}
+
+static void duel_clear_bar(duel_run *R)
+{
+    if (R->bar_shown) {
+        fprintf(stderr, "\r%-79s\r", "");
+        R->bar_shown = 0;
+    }
+}
+
+static void duel_on_progress(void *ud, uint64_t done, uint64_t total)
+{
+    duel_run *R = (duel_run *)ud;
+    char bar[31];
+    int i, fill = total ? (int)(30 * done / total) : 30;
+    if (R->quiet || !R->tty)
+        return;
+    for (i = 0; i < 30; i++)
+        bar[i] = i < fill ? '=' : (i == fill ? '>' : ' ');
+    bar[30] = '\0';
+    fprintf(stderr, "\rgeneration %u [%s] %llu/%llu games", R->gen_in_flight, bar, (unsigned long long)done,
+            (unsigned long long)total);
+    fflush(stderr);
+    R->bar_shown = 1;
+}
+
+static void duel_eta(char *out, size_t cap, double secs)
+{
+    long s = (long)(secs + 0.5);
+    if (s >= 3600)
+        snprintf(out, cap, "%ldh%02ldm", s / 3600, s / 60 % 60);
+    else if (s >= 60)
+        snprintf(out, cap, "%ldm%02lds", s / 60, s % 60);
+    else
+        snprintf(out, cap, "%lds", s);
+}
+
+static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
+{
+    neat_dominant d;
+    uint32_t gens_done = rep->generation + 1u - R->first_gen, left = R->cfg.generations - rep->generation - 1u;
+    double elapsed = duel_now() - R->started, gps = secs > 0 ? rep->games / secs : 0;
+    char eta[32];
+    neat_coev_dominant(R->coev, rep->dominants - 1u, &d);
+    duel_eta(eta, sizeof eta, elapsed / gens_done * left);
+    duel_clear_bar(R);
+    if (!R->quiet)
+        fprintf(stderr,
+                "gen %u/%u  best A %.0f B %.0f  species A %u B %u  champion %s %u:%u  dominance %u%s (%u hidden, "
+                "%u conns)  %.0f games/s  ETA %s\n",
+                rep->generation + 1u, R->cfg.generations, rep->pop[0].best_fitness, rep->pop[1].best_fitness,
+                rep->pop[0].species, rep->pop[1].species, duel_pop_name(rep->champion_pop),
+                rep->champion_wins[rep->champion_pop], rep->champion_wins[rep->champion_pop ^ 1u], rep->dominants,
+                rep->new_dominant ? " new" : "", neat_genome_hidden_count(d.genome),
+                neat_genome_enabled_count(d.genome), gps, eta);
+    if (R->json) {
+        uint32_t p;
+        printf("{\"generation\":%u,\"pop\":[", rep->generation);
+        for (p = 0; p < 2; p++) {
+            const neat_coev_pop_report *pr = &rep->pop[p];
+            printf("%s{\"best\":%.0f,\"mean\":%.4f,\"species\":%u,\"delta_t\":%.4f,\"mean_hidden\":%.4f,"
+                   "\"mean_connections\":%.4f,\"best_hidden\":%u,\"best_connections\":%u}",
+                   p ? "," : "", pr->best_fitness, pr->mean_fitness, pr->species, pr->delta_t, pr->mean_hidden,
+                   pr->mean_conns, pr->best_hidden, pr->best_conns);
+        }
+        printf("],\"champion\":\"%s\",\"champion_wins\":[%u,%u],\"dominance\":%u,\"new_dominant\":%s,"
+               "\"dominant_hidden\":%u,\"dominant_connections\":%u,\"games\":%llu,\"seconds\":%.3f,"
+               "\"games_per_s\":%.0f,\"eta_s\":%.0f}\n",
+               duel_pop_name(rep->champion_pop), rep->champion_wins[0], rep->champion_wins[1], rep->dominants,
+               rep->new_dominant ? "true" : "false", neat_genome_hidden_count(d.genome),
+               neat_genome_enabled_count(d.genome), (unsigned long long)rep->games, secs, gps,
+               elapsed / gens_done * left);
+        fflush(stdout);
+    }
+    duel_log(R, "generation %u: best A %.0f B %.0f, species A %u B %u, champion %s (%u:%u), dominance %u%s, "
+                "%llu games in %.2f s",
+             rep->generation, rep->pop[0].best_fitness, rep->pop[1].best_fitness, rep->pop[0].species,
+             rep->pop[1].species, duel_pop_name(rep->champion_pop), rep->champion_wins[0], rep->champion_wins[1],
+             rep->dominants, rep->new_dominant ? " (new)" : "", (unsigned long long)rep->games, secs);
+}
+
+static const char *duel_game_error(int err)
+{
+    if (err <= -200)
+        return "the duel refused a network";
+    if (err <= -100)
+        return nrt_strerror(err + 100);
+    return neat_strerror(err);
+}
+
+/* Generations until the configured count, a signal or an error. */
+static int duel_loop(duel_run *R)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = duel_on_signal;
+    sa.sa_flags = (int)SA_RESETHAND; /* a second Ctrl-C stops at once */
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    R->tty = isatty(2);
+    R->started = duel_now();
+    R->first_gen = neat_coev_generation(R->coev);
+    duel_games_on_progress(R->games, duel_on_progress, R);
+    while (neat_coev_generation(R->coev) < R->cfg.generations) {
+        neat_coev_report rep;
+        double t0 = duel_now(), secs;
+        int err;
+        if (duel_stop) {
+            duel_clear_bar(R);
+            duel_log(R, "interrupted before generation %u", neat_coev_generation(R->coev));
+            fprintf(stderr, "duel_evolve: interrupted; generation %u is saved. Resume with: duel_evolve resume %s\n",
+                    neat_coev_generation(R->coev), R->dir);
+            return 130;
+        }
+        R->gen_in_flight = neat_coev_generation(R->coev);
+        err = neat_coev_step(R->coev, duel_games_play, R->games, &rep);
+        if (err) {
+            duel_clear_bar(R);
+            fprintf(stderr, "duel_evolve: generation %u failed: %s\n", R->gen_in_flight, duel_game_error(err));
+            duel_log(R, "generation %u failed: %s", R->gen_in_flight, duel_game_error(err));
+            return 1;
+        }
+        secs = duel_now() - t0;
+        if (duel_record(R, &rep, secs) != 0)
+            return 1;
+        duel_report(R, &rep, secs);
+    }
+    if (duel_stop) {
+        duel_log(R, "interrupted after the last generation");
+        fprintf(stderr, "duel_evolve: interrupted; the run is complete (%u generations)\n", R->cfg.generations);
+        return 130;
+    }
+    {
+        neat_dominant d;
+        uint32_t n = neat_coev_dominant_count(R->coev);
+        neat_coev_dominant(R->coev, n - 1u, &d);
+        duel_log(R, "finished %u generations: dominance level %u, top dominant from generation %u (%u hidden, %u "
+                    "connections)",
+                 R->cfg.generations, n, d.generation, neat_genome_hidden_count(d.genome),
+                 neat_genome_enabled_count(d.genome));
+        if (!R->quiet)
+            fprintf(stderr, "done: %u generations in %s; dominance level %u; top dominant: generation %u, %u "
+                            "hidden nodes, %u connections (champions/gen-%05u.blob)\n",
+                    R->cfg.generations, R->dir, n, d.generation, neat_genome_hidden_count(d.genome),
+                    neat_genome_enabled_count(d.genome), d.generation);
+    }
+    return 0;
+}
+
+static int duel_parse_u32(const char *opt, const char *v, uint32_t lo, uint32_t hi, uint32_t *out)
+{
+    char *end;
+    unsigned long long x;
+    errno = 0;
+    x = v != NULL ? strtoull(v, &end, 10) : 0;
+    if (v == NULL || end == v || *end != '\0' || errno != 0 || x < lo || x > hi || v[0] == '-') {
+        fprintf(stderr, "duel_evolve: %s takes an integer in [%u, %u], not '%s'\n", opt, lo, hi, v ? v : "");
+        return -1;
+    }
+    *out = (uint32_t)x;
+    return 0;
+}
+
+static int duel_start(duel_run *R)
+{
+    int err = duel_games_create(&R->games, R->threads, &R->cfg.neat);
+    if (err) {
+        fprintf(stderr, "duel_evolve: out of memory\n");
+        return 1;
+    }
+    err = duel_loop(R);
+    duel_games_free(R->games);
+    neat_coev_free(R->coev);
+    return err;
+}
+
+int duel_cmd_run(int argc, char **argv)
+{
+    duel_run R;
+    const char *config = NULL;
+    char err[600], path[4200];
+    uint32_t seed = 0, gens = 0;
+    int i, have_seed = 0, have_gens = 0, e;
+    struct stat st;
+
+    memset(&R, 0, sizeof R);
+    duel_config_default(&R.cfg);
+    for (i = 0; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--config") == 0 && v) {
+            config = v;
+            i++;
+        } else if (strcmp(a, "--out") == 0 && v) {
+            R.dir = v;
+            i++;
+        } else if (strcmp(a, "--seed") == 0) {
+            if (duel_parse_u32(a, v, 0, 4294967295u, &seed))
+                return 2;
+            have_seed = 1;
+            i++;
+        } else if (strcmp(a, "--generations") == 0) {
+            if (duel_parse_u32(a, v, 1, 1000000, &gens))
+                return 2;
+            have_gens = 1;
+            i++;
+        } else if (strcmp(a, "--threads") == 0) {
+            if (duel_parse_u32(a, v, 0, 256, &R.threads))
+                return 2;
+            i++;
+        } else if (strcmp(a, "--quiet") == 0) {
+            R.quiet = 1;
+        } else if (strcmp(a, "--json") == 0) {
+            R.json = 1;
+        } else {
+            fprintf(stderr, "duel_evolve run: unknown option '%s' (usage: duel_evolve run --config FILE --out DIR "
+                            "[--seed S] [--generations N] [--threads T] [--quiet] [--json])\n", a);
+            return 2;
+        }
+    }
+    if (config == NULL || R.dir == NULL) {
+        fprintf(stderr, "duel_evolve run: --config FILE and --out DIR are required\n");
+        return 2;
+    }
+    if (duel_config_load(&R.cfg, config, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
+    if (have_seed)
+        R.cfg.seed = seed;
+    if (have_gens)
+        R.cfg.generations = gens;
+    duel_path(path, sizeof path, R.dir, "checkpoint.bin");
+    if (stat(path, &st) == 0) {
+        fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
+                        "another --out\n", R.dir, R.dir);
+        return 2;
+    }
+    duel_path(path, sizeof path, R.dir, "champions");
+    if (duel_mkdir(R.dir) != 0 || duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R.dir, strerror(errno));
+        return 2;
+    }
+    /* a directory left by a run that died before its first checkpoint starts over */
+    {
+        static const char *const files[] = {"generations.csv", "dominance.csv"};
+        for (i = 0; i < 2; i++) {
+            duel_path(path, sizeof path, R.dir, files[i]);
+            unlink(path);
+        }
+    }
+    if (duel_write_config(&R) != 0)
+        return 1;
+    e = neat_coev_create(&R.coev, &R.cfg.neat, &R.cfg.coev, R.cfg.seed, NULL);
+    if (e) {
+        fprintf(stderr, "duel_evolve: cannot start: %s\n", neat_strerror(e));
+        return 1;
+    }
+    duel_log(&R, "run: config %s, seed %u, %u generations, %u threads", config, R.cfg.seed, R.cfg.generations,
+             R.threads);
+    return duel_start(&R);
+}
+
+int duel_cmd_resume(int argc, char **argv)
+{
+    duel_run R;
+    char err[600], path[4200], *sets[64];
+    uint32_t gens = 0, n_sets = 0, k, g;
+    int i, have_gens = 0, e;
+    uint8_t *buf;
+    size_t len, off = 0;
+    duel_config before;
+
+    memset(&R, 0, sizeof R);
+    for (i = 0; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--generations") == 0) {
+            if (duel_parse_u32(a, v, 1, 1000000, &gens))
+                return 2;
+            have_gens = 1;
+            i++;
+        } else if (strcmp(a, "--threads") == 0) {
+            if (duel_parse_u32(a, v, 0, 256, &R.threads))
+                return 2;
+            i++;
+        } else if (strcmp(a, "--set") == 0 && v && n_sets < 64) {
+            sets[n_sets++] = argv[++i];
+        } else if (strcmp(a, "--quiet") == 0) {
+            R.quiet = 1;
+        } else if (strcmp(a, "--json") == 0) {
+            R.json = 1;
+        } else if (a[0] != '-' && R.dir == NULL) {
+            R.dir = a;
+        } else {
+            fprintf(stderr, "duel_evolve resume: unknown option '%s' (usage: duel_evolve resume DIR [--generations "
+                            "N] [--set key=value ...] [--threads T] [--quiet] [--json])\n", a);
+            return 2;
+        }
+    }
+    if (R.dir == NULL) {
+        fprintf(stderr, "duel_evolve resume: which run directory?\n");
+        return 2;
+    }
+    duel_config_default(&R.cfg);
+    duel_path(path, sizeof path, R.dir, "config.ini");
+    if (duel_config_load(&R.cfg, path, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
+    before = R.cfg;
+    for (k = 0; k < n_sets; k++)
+        if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
+            fprintf(stderr, "duel_evolve: --set %s: %s\n", sets[k], err);
+            return 2;
+        }
+    if (have_gens)
+        R.cfg.generations = gens;
+    if (R.cfg.seed != before.seed) {
+        fprintf(stderr, "duel_evolve: --set seed: a run's seed cannot change; start a new run instead\n");
+        return 2;
+    }
+    if (duel_config_check(&R.cfg, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
+
+    duel_path(path, sizeof path, R.dir, "checkpoint.bin");
+    if (duel_file_read(path, &buf, &len) != 0) {
+        if (errno != ENOENT) {
+            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(errno));
+            return 2;
+        }
+        /* died before its first checkpoint: start from generation 0 */
+        e = neat_coev_create(&R.coev, &R.cfg.neat, &R.cfg.coev, R.cfg.seed, NULL);
+    } else {
+        e = neat_coev_load(&R.coev, buf, len, NULL, &off);
+        free(buf);
+        if (e) {
+            fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(e));
+            return 2;
+        }
+        if (neat_coev_seed(R.coev) != R.cfg.seed) {
+            fprintf(stderr, "duel_evolve: %s: seed %llu, but config.ini says %u\n", path,
+                    (unsigned long long)neat_coev_seed(R.coev), R.cfg.seed);
+            neat_coev_free(R.coev);
+            return 2;
+        }
+        e = neat_coev_set_params(R.coev, &R.cfg.neat, &R.cfg.coev);
+        if (e) {
+            fprintf(stderr, "duel_evolve: the overrides do not fit this run (pop_size cannot change): %s\n",
+                    neat_strerror(e));
+            neat_coev_free(R.coev);
+            return 2;
+        }
+    }
+    if (e) {
+        fprintf(stderr, "duel_evolve: cannot resume: %s\n", neat_strerror(e));
+        return 1;
+    }
+    g = neat_coev_generation(R.coev);
+    /* rows written after the checkpoint belong to a generation that runs
+     * again: generations.csv keeps the generations before it, dominance.csv
+     * (whose first field is the level) the levels it holds */
+    duel_path(path, sizeof path, R.dir, "generations.csv");
+    if (duel_csv_keep_before(path, g) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
+        neat_coev_free(R.coev);
+        return 1;
+    }
+    duel_path(path, sizeof path, R.dir, "dominance.csv");
+    if (duel_csv_keep_before(path, neat_coev_dominant_count(R.coev) + 1u) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
+        neat_coev_free(R.coev);
+        return 1;
+    }
+    for (k = 0; k < n_sets; k++)
+        duel_log(&R, "resume: override %s", sets[k]);
+    if (have_gens)
+        duel_log(&R, "resume: generations %u", R.cfg.generations);
+    if (duel_write_config(&R) != 0) {
+        neat_coev_free(R.coev);
+        return 1;
+    }
+    duel_log(&R, "resume at generation %u of %u, %u threads", g, R.cfg.generations, R.threads);
+    if (!R.quiet)
+        fprintf(stderr, "resuming %s at generation %u of %u\n", R.dir, g, R.cfg.generations);
+    return duel_start(&R);
+}
+
+int duel_cmd_config(int argc, char **argv)
+{
+    duel_config cfg;
+    char err[600];
+    int i, dump = 0;
+    duel_config_default(&cfg);
+    for (i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--dump") == 0) {
+            dump = 1;
+        } else if (strcmp(argv[i], "--config") == 0 && i + 1 < argc) {
+            if (duel_config_load(&cfg, argv[++i], err, sizeof err) != 0) {
+                fprintf(stderr, "duel_evolve: %s\n", err);
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--set") == 0 && i + 1 < argc) {
+            if (duel_config_set(&cfg, argv[++i], err, sizeof err) != 0 ||
+                duel_config_check(&cfg, err, sizeof err) != 0) {
+                fprintf(stderr, "duel_evolve: --set %s: %s\n", argv[i], err);
+                return 2;
+            }
+        } else {
+            fprintf(stderr, "duel_evolve config: unknown option '%s' (usage: duel_evolve config --dump [--config "
+                            "FILE] [--set key=value ...])\n", argv[i]);
+            return 2;
+        }
+    }
+    if (!dump) {
+        fprintf(stderr, "duel_evolve config: nothing to do (try --dump)\n");
+        return 2;
+    }
+    duel_config_dump(stdout, &cfg);
+    return 0;
+}
