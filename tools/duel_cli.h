@@ -15,6 +15,11 @@ typedef struct duel_cli_ctrl {
     char name[256];
 } duel_cli_ctrl;
 
+/* Reads the whole file at path into a malloc'd *blob (the caller frees it)
+ * of *len bytes, not validated; on error prints one line naming the file and
+ * the problem to stderr and returns -1 (*blob NULL). */
+int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len);
+
 /* Loads spec into c; on error prints one line naming the problem to stderr
  * and returns -1. */
 int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec);
@@ -26,5 +31,7 @@ void duel_trace_row(void *file, const duel_world *w, const nrt_q15 in[2][DUEL_N_
                     const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev);
 
 int duel_cmd_play(int argc, char **argv);
+int duel_cmd_inspect(int argc, char **argv);
+int duel_cmd_dot(int argc, char **argv);
 
 #endif /* DUEL_CLI_H */

@@ -1,4 +1,4 @@
-/* duel_ctrl.c - a controller from the command line: a champion blob file (validated by the runtime) or builtin:NAME. */
+/* duel_ctrl.c - champion blob files read whole, and a controller from the command line: a blob (validated by the runtime) or builtin:NAME. */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,11 +7,45 @@
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
 
-int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
+int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
 {
     FILE *f;
     long size;
-    size_t need;
+    uint8_t *b;
+
+    *blob = NULL;
+    *len = 0;
+    f = fopen(path, "rb");
+    if (f == NULL) {
+        fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", path, strerror(errno));
+        return -1;
+    }
+    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot read\n", path);
+        fclose(f);
+        return -1;
+    }
+    if ((unsigned long)size > DUEL_BLOB_MAX) {
+        fprintf(stderr, "duel_evolve: %s: %ld bytes, larger than any champion blob\n", path, size);
+        fclose(f);
+        return -1;
+    }
+    b = (uint8_t *)malloc((size_t)size + 1);
+    if (b == NULL || fread(b, 1, (size_t)size, f) != (size_t)size) {
+        fprintf(stderr, "duel_evolve: %s: cannot read\n", path);
+        fclose(f);
+        free(b);
+        return -1;
+    }
+    fclose(f);
+    *blob = b;
+    *len = (size_t)size;
+    return 0;
+}
+
+int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
+{
+    size_t size, need;
     int err;
 
     memset(c, 0, sizeof *c);
@@ -25,33 +59,12 @@ int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
         c->ctrl.builtin = b;
         return 0;
     }
-    f = fopen(spec, "rb");
-    if (f == NULL) {
-        fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", spec, strerror(errno));
+    if (duel_cli_read_blob(spec, &c->blob, &size) != 0)
         return -1;
-    }
-    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot read\n", spec);
-        fclose(f);
-        return -1;
-    }
-    if ((unsigned long)size > DUEL_BLOB_MAX) {
-        fprintf(stderr, "duel_evolve: %s: %ld bytes, larger than any champion blob\n", spec, size);
-        fclose(f);
-        return -1;
-    }
-    c->blob = (uint8_t *)malloc((size_t)size + 1);
-    if (c->blob == NULL || fread(c->blob, 1, (size_t)size, f) != (size_t)size) {
-        fprintf(stderr, "duel_evolve: %s: cannot read\n", spec);
-        fclose(f);
-        duel_cli_ctrl_close(c);
-        return -1;
-    }
-    fclose(f);
-    err = nrt_mem_required(c->blob, (size_t)size, &need);
+    err = nrt_mem_required(c->blob, size, &need);
     if (!err) {
         c->mem = malloc(need);
-        err = c->mem == NULL ? NRT_E_NOMEM : nrt_load(&c->net, c->blob, (size_t)size, c->mem, need);
+        err = c->mem == NULL ? NRT_E_NOMEM : nrt_load(&c->net, c->blob, size, c->mem, need);
     }
     if (err) {
         fprintf(stderr, "duel_evolve: %s: not a valid champion blob: %s\n", spec, nrt_strerror(err));

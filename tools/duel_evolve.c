@@ -7,6 +7,8 @@
 static void duel_usage(FILE *f)
 {
     fprintf(f, "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
+               "       duel_evolve inspect BLOB\n"
+               "       duel_evolve dot BLOB [-o FILE.dot]\n"
                "Robot duels of spec v%d (docs/duelsim.md).\n", DUEL_SPEC_VERSION);
 }
 
@@ -18,6 +20,10 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "play") == 0)
         return duel_cmd_play(argc - 2, argv + 2);
+    if (strcmp(argv[1], "inspect") == 0)
+        return duel_cmd_inspect(argc - 2, argv + 2);
+    if (strcmp(argv[1], "dot") == 0)
+        return duel_cmd_dot(argc - 2, argv + 2);
     fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
     duel_usage(stderr);
     return 2;
