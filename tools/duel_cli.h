@@ -31,6 +31,9 @@ void duel_trace_row(void *file, const duel_world *w, const nrt_q15 in[2][DUEL_N_
                     const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev);
 
 int duel_cmd_play(int argc, char **argv);
+int duel_cmd_run(int argc, char **argv);
+int duel_cmd_resume(int argc, char **argv);
+int duel_cmd_config(int argc, char **argv);
 int duel_cmd_inspect(int argc, char **argv);
 int duel_cmd_dot(int argc, char **argv);
 

@@ -6,7 +6,12 @@
 
 static void duel_usage(FILE *f)
 {
-    fprintf(f, "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
+    fprintf(f, "usage: duel_evolve run --config FILE --out DIR [--seed S] [--generations N] [--threads T] [--quiet] "
+               "[--json]\n"
+               "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
+               "[--json]\n"
+               "       duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
+               "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
                "       duel_evolve inspect BLOB\n"
                "       duel_evolve dot BLOB [-o FILE.dot]\n"
                "Robot duels of spec v%d (docs/duelsim.md).\n", DUEL_SPEC_VERSION);
@@ -18,6 +23,12 @@ int main(int argc, char **argv)
         duel_usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
+    if (strcmp(argv[1], "run") == 0)
+        return duel_cmd_run(argc - 2, argv + 2);
+    if (strcmp(argv[1], "resume") == 0)
+        return duel_cmd_resume(argc - 2, argv + 2);
+    if (strcmp(argv[1], "config") == 0)
+        return duel_cmd_config(argc - 2, argv + 2);
     if (strcmp(argv[1], "play") == 0)
         return duel_cmd_play(argc - 2, argv + 2);
     if (strcmp(argv[1], "inspect") == 0)

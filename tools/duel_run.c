@@ -292,7 +292,7 @@ static int duel_loop(duel_run *R)
         if (duel_stop) {
             duel_clear_bar(R);
             duel_log(R, "interrupted before generation %u", neat_coev_generation(R->coev));
-            fprintf(stderr, "duel_evolve: interrupted; generation %u is saved. Resume with: duel_evolve resume %s\n",
+            fprintf(stderr, "duel_evolve: interrupted; %u generations are saved. Resume with: duel_evolve resume %s\n",
                     neat_coev_generation(R->coev), R->dir);
             return 130;
         }
