@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# duel_run.sh - duel_evolve run/resume/config from the outside: thread-count independence, kill -9 and Ctrl-C resumes, configuration errors.
+set -euo pipefail
+duel=$1
+what=$2
+cfg=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# Everything of a run directory but timings and the log: champions, the
+# dominance table, the checkpoint, and generations.csv without its seconds column.
+same_run() {
+  diff -r "$1/champions" "$2/champions" || { echo "champions differ"; exit 1; }
+  cmp "$1/dominance.csv" "$2/dominance.csv" || { echo "dominance.csv differs"; exit 1; }
+  cmp "$1/checkpoint.bin" "$2/checkpoint.bin" || { echo "checkpoint differs"; exit 1; }
+  diff <(cut -d, -f1-12 "$1/generations.csv") <(cut -d, -f1-12 "$2/generations.csv") ||
+    { echo "generations.csv differs"; exit 1; }
+  [ "$(ls "$1/champions" | wc -l)" -gt 0 ] || { echo "no champions"; exit 1; }
+}
+
+expect_bad() { # expect_bad PATTERN ARGS...: exit 2, one line matching PATTERN
+  local pattern=$1 rc=0 msg
+  shift
+  msg=$("$duel" "$@" 2>&1 >/dev/null) || rc=$?
+  [ "$rc" -eq 2 ] || { echo "$*: exit $rc, expected 2 ($msg)"; exit 1; }
+  [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || { echo "$*: more than one line: $msg"; exit 1; }
+  printf '%s\n' "$msg" | grep -q -- "$pattern" || { echo "$*: got '$msg', expected '$pattern'"; exit 1; }
+}
+
+case "$what" in
+threads)
+  "$duel" run --config "$cfg" --out "$tmp/t1" --threads 1 --quiet
+  "$duel" run --config "$cfg" --out "$tmp/t2" --threads 2 --quiet
+  same_run "$tmp/t1" "$tmp/t2"
+  # and a different seed is a different run
+  "$duel" run --config "$cfg" --out "$tmp/t3" --threads 2 --quiet --seed 8 --generations 3
+  ! cmp -s "$tmp/t1/champions/gen-00002.blob" "$tmp/t3/champions/gen-00002.blob" ||
+    { echo "seed 8 gave seed 7's champion"; exit 1; }
+  ;;
+kill)
+  "$duel" run --config "$cfg" --out "$tmp/ref" --threads 2 --quiet
+  # killed at random moments, again and again, then resumed to the end
+  "$duel" run --config "$cfg" --out "$tmp/k" --threads 2 --quiet & pid=$!
+  sleep 0.$((RANDOM % 5 + 2)); kill -9 "$pid" 2>/dev/null || true; wait "$pid" 2>/dev/null || true
+  kills=1
+  for i in 1 2 3 4 5; do
+    "$duel" resume "$tmp/k" --threads 2 --quiet & pid=$!
+    sleep 0.$((RANDOM % 6 + 1)); kill -9 "$pid" 2>/dev/null && kills=$((kills + 1)) || true; wait "$pid" 2>/dev/null || true
+  done
+  "$duel" resume "$tmp/k" --threads 1 --quiet
+  same_run "$tmp/ref" "$tmp/k"
+  echo "identical after $kills kill -9"
+  ;;
+interrupt)
+  "$duel" run --config "$cfg" --out "$tmp/ref" --threads 2 --quiet
+  rc=0
+  "$duel" run --config "$cfg" --out "$tmp/i" --threads 2 --quiet 2> "$tmp/err" & pid=$!
+  sleep 0.5; kill -INT "$pid"; wait "$pid" || rc=$?
+  if [ "$rc" -eq 0 ]; then echo "the run finished before Ctrl-C: nothing tested"; exit 1; fi
+  [ "$rc" -eq 130 ] || { echo "Ctrl-C: exit $rc, expected 130"; cat "$tmp/err"; exit 1; }
+  grep -q "duel_evolve resume $tmp/i" "$tmp/err" || { echo "no resume hint: $(cat "$tmp/err")"; exit 1; }
+  grep -q "interrupted" "$tmp/i/log.txt" || { echo "interrupt not logged"; exit 1; }
+  "$duel" resume "$tmp/i" --quiet
+  same_run "$tmp/ref" "$tmp/i"
+  ;;
+overrides)
+  "$duel" run --config "$cfg" --out "$tmp/o" --quiet --generations 3
+  "$duel" resume "$tmp/o" --quiet --generations 5 --set add_node_prob=0.05 --set coevolution.hof_opponents=6
+  grep -q "override add_node_prob=0.05" "$tmp/o/log.txt" || { echo "override not logged"; exit 1; }
+  grep -q "^add_node_prob = 0.05" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
+  grep -q "^hof_opponents = 6" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
+  grep -q "^generations = 5" "$tmp/o/config.ini" || { echo "generations not stored"; exit 1; }
+  [ "$(ls "$tmp/o/champions" | wc -l)" -eq 5 ] || { echo "not extended to 5 generations"; exit 1; }
+  expect_bad "pop_size cannot change" resume "$tmp/o" --set pop_size=40
+  expect_bad "seed cannot change" resume "$tmp/o" --set seed=9
+  expect_bad "unknown key 'add_nod_prob' (did you mean 'add_node_prob'?)" resume "$tmp/o" --set add_nod_prob=1
+  ;;
+config)
+  # --dump loads back unchanged, and the paper's file is the defaults' twin where it speaks
+  "$duel" config --dump --config "$cfg" > "$tmp/a.ini"
+  "$duel" config --dump --config "$tmp/a.ini" > "$tmp/b.ini"
+  cmp "$tmp/a.ini" "$tmp/b.ini" || { echo "dump does not round-trip"; exit 1; }
+  grep -q "^pop_size = 32" "$tmp/a.ini" || { echo "dump lost pop_size"; exit 1; }
+  printf '[neat]\npop_size = 32\nadd_nod_prob = 0.1\n' > "$tmp/typo.ini"
+  expect_bad "typo.ini:3: unknown key 'add_nod_prob' (did you mean 'add_node_prob'?)" \
+    run --config "$tmp/typo.ini" --out "$tmp/never"
+  printf '[neat]\ngenerations = 5\n' > "$tmp/wrong.ini"
+  expect_bad "wrong.ini:2: key 'generations' belongs in section \[run\], not \[neat\]" \
+    run --config "$tmp/wrong.ini" --out "$tmp/never"
+  printf '[coevolution]\nhof_opponents = lots\n' > "$tmp/value.ini"
+  expect_bad "value.ini:2: bad value 'lots' for hof_opponents" run --config "$tmp/value.ini" --out "$tmp/never"
+  printf '[robots]\nx = 1\n' > "$tmp/section.ini"
+  expect_bad "section.ini:2: unknown section \[robots\]" run --config "$tmp/section.ini" --out "$tmp/never"
+  expect_bad "missing.ini: cannot open" run --config "$tmp/missing.ini" --out "$tmp/never"
+  printf '[neat]\nn_inputs = 5\n' > "$tmp/io.ini"
+  expect_bad "n_inputs must be 12" run --config "$tmp/io.ini" --out "$tmp/never"
+  [ ! -e "$tmp/never" ] || { echo "a bad configuration created the run directory"; exit 1; }
+  "$duel" run --config "$cfg" --out "$tmp/once" --quiet --generations 1
+  expect_bad "already holds a run" run --config "$cfg" --out "$tmp/once"
+  expect_bad "which run directory" resume
+  expect_bad "config.ini: cannot open" resume "$tmp/nothing"
+  # a corrupt checkpoint is refused with its offset, and nothing is lost
+  printf 'garbage' | dd of="$tmp/once/checkpoint.bin" bs=1 seek=100 conv=notrunc 2>/dev/null
+  expect_bad "checkpoint.bin: offset [0-9]*: " resume "$tmp/once"
+  ;;
+*)
+  echo "unknown case $what"; exit 2;;
+esac
