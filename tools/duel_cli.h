@@ -12,6 +12,7 @@ typedef struct duel_cli_ctrl {
     nrt_net net;
     void *mem;
     uint8_t *blob;
+    size_t blob_len;
     char name[256];
 } duel_cli_ctrl;
 
@@ -34,6 +35,7 @@ int duel_cmd_play(int argc, char **argv);
 int duel_cmd_run(int argc, char **argv);
 int duel_cmd_resume(int argc, char **argv);
 int duel_cmd_config(int argc, char **argv);
+int duel_cmd_ladder(int argc, char **argv);
 int duel_cmd_inspect(int argc, char **argv);
 int duel_cmd_dot(int argc, char **argv);
 

@@ -61,6 +61,7 @@ int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
     }
     if (duel_cli_read_blob(spec, &c->blob, &size) != 0)
         return -1;
+    c->blob_len = size;
     err = nrt_mem_required(c->blob, size, &need);
     if (!err) {
         c->mem = malloc(need);

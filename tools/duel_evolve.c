@@ -11,6 +11,7 @@ static void duel_usage(FILE *f)
                "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
                "[--json]\n"
                "       duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
+               "       duel_evolve ladder DIR\n"
                "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
                "       duel_evolve inspect BLOB\n"
                "       duel_evolve dot BLOB [-o FILE.dot]\n"
@@ -29,6 +30,8 @@ int main(int argc, char **argv)
         return duel_cmd_resume(argc - 2, argv + 2);
     if (strcmp(argv[1], "config") == 0)
         return duel_cmd_config(argc - 2, argv + 2);
+    if (strcmp(argv[1], "ladder") == 0)
+        return duel_cmd_ladder(argc - 2, argv + 2);
     if (strcmp(argv[1], "play") == 0)
         return duel_cmd_play(argc - 2, argv + 2);
     if (strcmp(argv[1], "inspect") == 0)
