@@ -103,6 +103,26 @@ config)
   printf 'garbage' | dd of="$tmp/once/checkpoint.bin" bs=1 seek=100 conv=notrunc 2>/dev/null
   expect_bad "checkpoint.bin: offset [0-9]*: " resume "$tmp/once"
   ;;
+ladder)
+  "$duel" run --config "$cfg" --out "$tmp/l" --quiet --generations 4
+  "$duel" ladder "$tmp/l" > "$tmp/ladder.txt"
+  levels=$(($(wc -l < "$tmp/l/dominance.csv") - 1))
+  [ "$(($(wc -l < "$tmp/l/ladder.csv") - 1))" -eq "$levels" ] || { echo "ladder.csv: not one row per dominant"; exit 1; }
+  head -1 "$tmp/l/ladder.csv" | grep -q "^level,generation,population,hidden,connections,idle_wins,idle_losses,.*forager-hunter_losses,total_wins,total_losses$" ||
+    { echo "ladder.csv header: $(head -1 "$tmp/l/ladder.csv")"; exit 1; }
+  # each row: wins and losses of 288 games per built-in, the totals their sums
+  tail -n +2 "$tmp/l/ladder.csv" | awk -F, '{ w = 0; l = 0
+      for (i = 6; i < 16; i += 2) { if ($i + $(i + 1) > 288) exit 1; w += $i; l += $(i + 1) }
+      if (w != $16 || l != $17 || NF != 17) exit 1 }' || { echo "ladder.csv rows do not add up"; exit 1; }
+  # the ladder's numbers are play's numbers
+  gen=$(sed -n 2p "$tmp/l/ladder.csv" | cut -d, -f2)
+  "$duel" play "$tmp/l/champions/gen-$(printf %05d "$gen").blob" builtin:forager --games 288 > "$tmp/play.txt"
+  want=$(sed -n 2p "$tmp/l/ladder.csv" | cut -d, -f10,11 | tr , :)
+  grep -q "wins" "$tmp/play.txt" || { echo "play printed no wins"; exit 1; }
+  got=$(grep -o "wins [0-9]*" "$tmp/play.txt" | head -2 | grep -o "[0-9]*" | paste -sd:)
+  [ "$got" = "$want" ] || { echo "ladder says $want against forager, play says $got"; cat "$tmp/play.txt"; exit 1; }
+  expect_bad "dominance.csv: cannot open" ladder "$tmp/none"
+  ;;
 *)
   echo "unknown case $what"; exit 2;;
 esac
