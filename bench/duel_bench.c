@@ -72,7 +72,7 @@ int main(int argc, char **argv)
     uint64_t steps39, steps202;
     double sps39, sps202, t0, cmp_s;
     duel_tally tally;
-    int callgrind_games = 0, i;
+    int callgrind_games = 0, i, rc = 0;
     const char *blob_dir = NULL;
 
     for (i = 1; i < argc; i++) {
@@ -101,10 +101,11 @@ int main(int argc, char **argv)
             f = fopen(path, "wb");
             if (f == NULL || fwrite(ph->blob, 1, ph->blob_len, f) != ph->blob_len || fclose(f) != 0) {
                 fprintf(stderr, "duel_bench: %s: cannot write\n", path);
-                return 1;
+                rc = 1;
+                break;
             }
         }
-        return 0;
+        goto done;
     }
     if (callgrind_games > 0) {
         /* fixed work, nothing timed: under valgrind --tool=callgrind, the
@@ -117,7 +118,7 @@ int main(int argc, char **argv)
             robot_steps += 2u * r.steps;
         }
         printf("{\"games\":%d,\"robot_steps\":%llu}\n", callgrind_games, (unsigned long long)robot_steps);
-        return 0;
+        goto done;
     }
     sps39 = db_steps_per_second(&p39, 1.0, &steps39);
     sps202 = db_steps_per_second(&p202, 1.0, &steps202);
@@ -130,9 +131,10 @@ int main(int argc, char **argv)
            288.0 / cmp_s, tally.wins_a, tally.wins_b, tally.draws, tally.timeouts);
     printf("{\"game_steps_per_s_39\":%.0f,\"game_steps_per_s_202\":%.0f,\"games_per_s_288\":%.1f,"
            "\"comparison_seconds\":%.4f}\n", sps39, sps202, 288.0 / cmp_s, cmp_s);
+done:
     for (i = 0; i < 2; i++) {
         neat_phenotype_free(&p39.ph[i]);
         neat_phenotype_free(&p202.ph[i]);
     }
-    return 0;
+    return rc;
 }
