@@ -189,8 +189,7 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
     neat_rbuf r;
     neat_params p;
     neat_pop *pop = NULL;
-    uint32_t i, k, n, stored_crc;
-    const uint8_t *magic;
+    uint32_t i, k, n;
     uint8_t *seen = NULL;
     size_t state_off;
     int err;
@@ -201,29 +200,7 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
     memset(&r, 0, sizeof r);
     r.p = buf;
     r.n = len;
-    /* the frame first: magic, version, checksum; then trust the rest */
-    magic = neat_get(&r, 8);
-    if (magic != NULL && memcmp(magic, neat_ckpt_magic, 8) != 0) {
-        r.off = 0;
-        neat_fail(&r, NEAT_E_FORMAT);
-    }
-    if (!r.err && neat_get_u32(&r) != NEAT_CHECKPOINT_VERSION && !r.err) {
-        r.off = 8;
-        neat_fail(&r, NEAT_E_FORMAT);
-    }
-    if (!r.err && len < 16) {
-        r.off = len;
-        neat_fail(&r, NEAT_E_TRUNCATED);
-    }
-    if (!r.err) {
-        stored_crc = (uint32_t)buf[len - 4] | ((uint32_t)buf[len - 3] << 8) | ((uint32_t)buf[len - 2] << 16) |
-                     ((uint32_t)buf[len - 1] << 24);
-        if (nrt_crc32(0, buf, len - 4) != stored_crc) {
-            r.off = len - 4;
-            neat_fail(&r, NEAT_E_CRC);
-        }
-        r.n = len - 4; /* the body ends at the checksum */
-    }
+    neat_get_frame(&r, neat_ckpt_magic, NEAT_CHECKPOINT_VERSION);
     if (!r.err) {
         size_t at = r.off;
         neat_get_params(&r, &p);

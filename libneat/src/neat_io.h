@@ -35,6 +35,10 @@ uint32_t neat_get_u8(neat_rbuf *r);
 uint32_t neat_get_u32(neat_rbuf *r);
 uint64_t neat_get_u64(neat_rbuf *r);
 double neat_get_f64(neat_rbuf *r);
+/* The frame of a sealed buffer, before anything else is trusted: magic,
+ * version, then the CRC-32 in the last 4 bytes; the body then ends before
+ * the checksum. */
+void neat_get_frame(neat_rbuf *r, const uint8_t magic[8], uint32_t version);
 /* a count of records of rec_size bytes that must fit in what is left */
 uint32_t neat_get_count(neat_rbuf *r, size_t rec_size);
 
