@@ -37,6 +37,7 @@ typedef struct duel_run {
     uint32_t first_gen;        /* the generation this process started at */
     uint32_t gen_in_flight;
     int bar_shown;
+    double bar_drawn;          /* when the bar was last drawn */
 } duel_run;
 
 static double duel_now(void)
@@ -197,13 +198,19 @@ static void duel_on_progress(void *ud, uint64_t done, uint64_t total)
     duel_run *R = (duel_run *)ud;
     char bar[31];
     int i, fill = total ? (int)(30 * done / total) : 30;
+    double now;
     if (R->quiet || !R->tty)
         return;
+    /* about five redraws a second, whatever the batches */
+    now = duel_now();
+    if (now - R->bar_drawn < 0.2)
+        return;
+    R->bar_drawn = now;
     for (i = 0; i < 30; i++)
         bar[i] = i < fill ? '=' : (i == fill ? '>' : ' ');
     bar[30] = '\0';
-    fprintf(stderr, "\rgeneration %u [%s] %llu/%llu games", R->gen_in_flight, bar, (unsigned long long)done,
-            (unsigned long long)total);
+    fprintf(stderr, "\rgeneration %u [%s] %llu/%llu games of this batch", R->gen_in_flight, bar,
+            (unsigned long long)done, (unsigned long long)total);
     fflush(stderr);
     R->bar_shown = 1;
 }
@@ -230,9 +237,9 @@ static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
     duel_clear_bar(R);
     if (!R->quiet)
         fprintf(stderr,
-                "gen %u/%u  best A %.0f B %.0f  species A %u B %u  champion %s %u:%u  dominance %u%s (%u hidden, "
+                "gen %u (%u/%u)  best A %.0f B %.0f  species A %u B %u  champion %s %u:%u  dominance %u%s (%u hidden, "
                 "%u conns)  %.0f games/s  ETA %s\n",
-                rep->generation + 1u, R->cfg.generations, rep->pop[0].best_fitness, rep->pop[1].best_fitness,
+                rep->generation, rep->generation + 1u, R->cfg.generations, rep->pop[0].best_fitness, rep->pop[1].best_fitness,
                 rep->pop[0].species, rep->pop[1].species, duel_pop_name(rep->champion_pop),
                 rep->champion_wins[rep->champion_pop], rep->champion_wins[rep->champion_pop ^ 1u], rep->dominants,
                 rep->new_dominant ? " new" : "", neat_genome_hidden_count(d.genome),
