@@ -3,12 +3,16 @@
 
 #include "duel.h"
 
-static void duel_act(duel_controller *c, const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 out[DUEL_N_OUTPUTS])
+/* The controller's outputs for in: a network's in place (no copy), a
+ * builtin's in buf. */
+static const nrt_q15 *duel_act(duel_controller *c, const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 buf[DUEL_N_OUTPUTS])
 {
-    if (c->net != NULL)
-        nrt_step(c->net, in, out);
-    else
-        duel_builtin_act(c->builtin, in, out);
+    if (c->net != NULL) {
+        nrt_step(c->net, in, NULL);
+        return nrt_outputs(c->net);
+    }
+    duel_builtin_act(c->builtin, in, buf);
+    return buf;
 }
 
 static int duel_controller_ok(const duel_controller *c)
@@ -24,7 +28,8 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
               void *ud)
 {
     duel_world w, before;
-    nrt_q15 in_buf[2][DUEL_N_INPUTS], out[2][DUEL_N_OUTPUTS], *in[2];
+    nrt_q15 in_buf[2][DUEL_N_INPUTS], out_buf[2][DUEL_N_OUTPUTS], *in[2];
+    const nrt_q15 *out[2];
     duel_event ev;
     int err, side;
 
@@ -50,17 +55,22 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
             in[side] = c->net != NULL ? nrt_inputs(c->net) : in_buf[side];
             duel_sense(&w, side, in[side]);
         }
-        duel_act(west, in[DUEL_WEST], out[DUEL_WEST]);
-        duel_act(east, in[DUEL_EAST], out[DUEL_EAST]);
+        out[DUEL_WEST] = duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
+        out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
         if (trace != NULL)
             before = w;
         duel_world_step(&w, out[DUEL_WEST], out[DUEL_EAST], &ev);
         if (trace != NULL) {
-            /* the inputs this step used (the networks' slots now hold the next step's) */
-            for (side = 0; side < 2; side++)
+            /* the callback gets plain arrays: a network's inputs and outputs
+             * are still in its activation buffers, copy them out */
+            for (side = 0; side < 2; side++) {
                 if (in[side] != in_buf[side])
                     memcpy(in_buf[side], in[side], sizeof in_buf[side]);
-            trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in_buf, (const nrt_q15(*)[DUEL_N_OUTPUTS])out, &ev);
+                if (out[side] != out_buf[side])
+                    memcpy(out_buf[side], out[side], sizeof out_buf[side]);
+            }
+            trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in_buf, (const nrt_q15(*)[DUEL_N_OUTPUTS])out_buf,
+                  &ev);
         }
     }
     res->outcome = w.outcome;

@@ -25,7 +25,7 @@ static nrt_q15 duel_range_value(uint32_t d, uint32_t units_per_step)
  * 1700). round(d / 1700) = (floor(2 d / 1700) + 1) / 2, and
  * floor(2 d / 1700) = floor(sqrt(floor(d2 / 722500))) exactly (722500 =
  * 1700^2 / 4); the quotient stays below 2^32 on the board (d < 849). */
-static nrt_q15 duel_range_reading(int64_t d2)
+static inline nrt_q15 duel_range_reading(int64_t d2)
 {
     uint32_t n = duel_isqrt32((uint32_t)((uint64_t)d2 / 722500u));
     int32_t v = 32768 - (int32_t)((n + 1u) >> 1);
@@ -34,47 +34,46 @@ static nrt_q15 duel_range_reading(int64_t d2)
 
 /* The sector of the non-zero vector (vx, vy) from the robot: the same
  * decision tree as duel_scan's, for the one robot rangefinder object. */
-static int duel_sector(int64_t vx, int64_t vy, const int32_t bx[5], const int32_t by[5])
+static int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const int64_t by[5])
 {
-    if ((int64_t)bx[2] * vy < (int64_t)by[2] * vx)
-        return (int64_t)bx[0] * vy < (int64_t)by[0] * vx ? 0 : ((int64_t)bx[1] * vy < (int64_t)by[1] * vx ? 1 : 2);
-    return (int64_t)bx[3] * vy < (int64_t)by[3] * vx ? 3 : ((int64_t)bx[4] * vy < (int64_t)by[4] * vx ? 4 : 0);
+    if (bx[2] * vy < by[2] * vx)
+        return bx[0] * vy < by[0] * vx ? 0 : (bx[1] * vy < by[1] * vx ? 1 : 2);
+    return bx[3] * vy < by[3] * vx ? 3 : (bx[4] * vy < by[4] * vx ? 4 : 0);
 }
 
-/* Nearest squared distance per sector into best2[5] (INT64_MAX: none) over
- * the items whose mask bit is set. Sector k runs from boundary k-1
+/* Nearest squared distance per sector, minus one, into near[5] (UINT64_MAX:
+ * none) over the items whose mask bit is set. Minus one, as unsigned: an
+ * object at the robot's very centre (d2 = 0) has no bearing and must give no
+ * reading, and 0 - 1 wraps to the largest value, which never wins (the
+ * sector tree classes it as 0, harmlessly). Sector k runs from boundary k-1
  * (inclusive: a bearing on a boundary belongs to the sector counter-clockwise
  * of it) to boundary k (exclusive); v is clockwise of boundary k when
  * cross(b_k, v) < 0. Two or three 64-bit cross products per object (Q16.16 x
  * Q30 < 2^57), no trigonometry: boundary 2 (straight behind) splits the left
- * sectors 0-2 from the right ones 3, 4, 0. The boundaries live in locals so
- * the products take them from registers or as memory operands, and the
- * robot's position is read once: this loop is the simulator's hot spot. */
+ * sectors 0-2 from the right ones 3, 4, 0. The boundaries come widened to
+ * 64 bits and the robot's position is read once: this loop is the
+ * simulator's hot spot. */
 static void duel_scan(int32_t rx, int32_t ry, const int32_t *ox, const int32_t *oy, uint32_t mask,
-                      const int32_t bx[5], const int32_t by[5], int64_t best2[5])
+                      const int64_t bx[5], const int64_t by[5], uint64_t near[5])
 {
-    const int64_t b0x = bx[0], b0y = by[0], b1x = bx[1], b1y = by[1], b2x = bx[2], b2y = by[2];
-    const int64_t b3x = bx[3], b3y = by[3], b4x = bx[4], b4y = by[4];
     uint32_t i;
     int k;
     for (k = 0; k < 5; k++)
-        best2[k] = INT64_MAX;
+        near[k] = UINT64_MAX;
     for (i = 0; mask != 0; i++, mask >>= 1) {
-        int64_t vx, vy, d2;
+        int64_t vx, vy;
+        uint64_t d2m1;
         if (!(mask & 1u))
             continue;
         vx = (int64_t)ox[i] - rx;
         vy = (int64_t)oy[i] - ry;
-        d2 = vx * vx + vy * vy;
-        if (b2x * vy < b2y * vx)           /* bearing in (0, 180) degrees */
-            k = b0x * vy < b0y * vx ? 0 : (b1x * vy < b1y * vx ? 1 : 2);
+        d2m1 = (uint64_t)(vx * vx + vy * vy) - 1u;
+        if (bx[2] * vy < by[2] * vx)       /* bearing in (0, 180) degrees */
+            k = bx[0] * vy < by[0] * vx ? 0 : (bx[1] * vy < by[1] * vx ? 1 : 2);
         else                               /* [180, 360] */
-            k = b3x * vy < b3y * vx ? 3 : (b4x * vy < b4y * vx ? 4 : 0);
-        /* an object at the robot's very centre has no bearing and gives no
-         * reading (it is classed as sector 0 above; d2 == 0 skips it here,
-         * off the common path) */
-        if (d2 < best2[k] && d2 != 0)
-            best2[k] = d2;
+            k = bx[3] * vy < by[3] * vx ? 3 : (bx[4] * vy < by[4] * vx ? 4 : 0);
+        if (d2m1 < near[k])
+            near[k] = d2m1;
     }
 }
 
@@ -99,8 +98,10 @@ static int64_t duel_wall_distance(const duel_robot *r, int32_t c, int32_t s)
 void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
 {
     const duel_robot *me = &w->robot[side], *other = &w->robot[side ^ 1];
-    int32_t bx[5], by[5], c, s;
-    int64_t best2[5], diff, wall;
+    int64_t bx[5], by[5]; /* Q30 unit vectors, widened once for the products */
+    int32_t c, s;
+    uint64_t near[5];
+    int64_t diff, wall;
     int k;
 
     duel_cossin(me->heading, &c, &s);
@@ -109,21 +110,20 @@ void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
     for (k = 0; k < 2; k++) {
         int64_t cc = (int64_t)c * duel_bcos[k], ss = (int64_t)s * duel_bsin[k];
         int64_t cs = (int64_t)c * duel_bsin[k], sc = (int64_t)s * duel_bcos[k];
-        bx[k] = (int32_t)duel_round_shift(cc - ss, 30);
-        by[k] = (int32_t)duel_round_shift(cs + sc, 30);
-        bx[4 - k] = (int32_t)duel_round_shift(cc + ss, 30);
-        by[4 - k] = (int32_t)duel_round_shift(sc - cs, 30);
+        bx[k] = duel_round_shift(cc - ss, 30);
+        by[k] = duel_round_shift(cs + sc, 30);
+        bx[4 - k] = duel_round_shift(cc + ss, 30);
+        by[4 - k] = duel_round_shift(sc - cs, 30);
     }
     bx[2] = -c;
     by[2] = -s;
     in[0] = NRT_ONE;
     /* food rangefinders 1-5: 1 - d / 850 */
-    duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), bx, by, best2);
+    duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), bx, by, near);
     for (k = 0; k < 5; k++)
-        in[1 + k] = best2[k] == INT64_MAX ? 0 : duel_range_reading(best2[k]);
+        in[1 + k] = near[k] == UINT64_MAX ? 0 : duel_range_reading((int64_t)(near[k] + 1u));
     /* robot rangefinders 6-10: one object, one sector */
-    for (k = 0; k < 5; k++)
-        in[6 + k] = 0;
+    in[6] = in[7] = in[8] = in[9] = in[10] = 0;
     {
         int64_t vx = (int64_t)other->x - me->x, vy = (int64_t)other->y - me->y;
         int64_t d2 = vx * vx + vy * vy;

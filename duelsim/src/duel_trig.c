@@ -2,8 +2,9 @@
 #include "duel_internal.h"
 
 /* DUEL_SIN_Q[i] = round(2^30 sin(i pi / 2048)), i = 0..1024: a quarter wave
- * (tests/duelsim/test_trig.c recomputes every entry). */
-static const int32_t duel_sin_q[1025] = {
+ * (tests/duelsim/test_trig.c recomputes every entry); entry 1025 repeats
+ * entry 1024 so that the end of the range needs no test. */
+static const int32_t duel_sin_q[1026] = {
     0, 1647099, 3294193, 4941281, 6588356, 8235416, 9882456, 11529474,
     13176464, 14823423, 16470347, 18117233, 19764076, 21410872, 23057618, 24704310,
     26350943, 27997515, 29644021, 31290457, 32936819, 34583104, 36229307, 37875426,
@@ -133,6 +134,7 @@ static const int32_t duel_sin_q[1025] = {
     1073418433, 1073457592, 1073494225, 1073528332, 1073559913, 1073588967, 1073615496, 1073639498,
     1073660973, 1073679922, 1073696345, 1073710241, 1073721611, 1073730454, 1073736771, 1073740561,
     1073741824,
+    1073741824, /* sin(pi/2) again: p = 2^30 interpolates between 1024 and 1025 with no test */
 };
 
 #define DUEL_QUARTER 0x40000000u
@@ -143,8 +145,6 @@ static int32_t duel_sin_quarter(uint32_t p)
 {
     uint32_t i = p >> 20, frac = p & 0xFFFFFu;
     int64_t lo, hi;
-    if (i >= 1024)
-        return duel_sin_q[1024];
     lo = duel_sin_q[i];
     hi = duel_sin_q[i + 1];
     /* rounding to nearest; hi >= lo, so the product is non-negative */

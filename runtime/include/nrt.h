@@ -128,6 +128,10 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs);
  * sparing the copy (valid until that step). */
 nrt_q15 *nrt_inputs(nrt_net *net);
 
+/* The n_outputs values the last nrt_step produced, in place (valid until
+ * the next step): the alternative to copying them out. */
+const nrt_q15 *nrt_outputs(const nrt_net *net);
+
 /* For feed-forward tasks: steps with the same inputs until no activation
  * changes, at most max_steps times. Returns the number of steps taken, or
  * -1 if the network was still changing after max_steps (outputs then hold

@@ -15,6 +15,11 @@ nrt_q15 *nrt_inputs(nrt_net *net)
     return net->act[net->cur];
 }
 
+const nrt_q15 *nrt_outputs(const nrt_net *net)
+{
+    return net->act[net->cur] + net->n_inputs;
+}
+
 void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
 {
     nrt_q15 *prev = net->act[net->cur];

@@ -320,6 +320,30 @@ static void test_nearest_wins(void **state)
 }
 
 /* an eaten item (its bit cleared) is not seen, even when nearer */
+/* an item exactly at the robot's centre has no bearing: it gives no reading
+ * and hides nothing (a farther item ahead is still read); at one unit away it
+ * reads, nearly 1 */
+static void test_item_at_centre(void **state)
+{
+    duel_world w;
+    nrt_q15 in[DUEL_N_INPUTS];
+    int k;
+    (void)state;
+    ts_world(&w, 0, 300, 300, ts_deg(10));
+    w.food_x[0] = w.robot[0].x;
+    w.food_y[0] = w.robot[0].y;
+    w.food_mask = 1u;
+    duel_sense(&w, 0, in);
+    for (k = 1; k <= 5; k++)
+        assert_int_equal(in[k], 0);
+    ts_food_at(&w, 1, &w.robot[0], 0, 100);
+    duel_sense(&w, 0, in);
+    ts_only(in, 1, 0, ts_range(&w.robot[0], w.food_x[1], w.food_y[1]));
+    w.food_x[0] = w.robot[0].x + 1;
+    duel_sense(&w, 0, in);
+    ts_only(in, 1, 0, 32767);
+}
+
 static void test_eaten_food_unseen(void **state)
 {
     duel_world w;
@@ -522,6 +546,7 @@ int main(void)
         cmocka_unit_test(test_nothing_reads_zero),
         cmocka_unit_test(test_nearest_wins),
         cmocka_unit_test(test_eaten_food_unseen),
+        cmocka_unit_test(test_item_at_centre),
         cmocka_unit_test(test_training_start),
         cmocka_unit_test(test_robot_sectors),
         cmocka_unit_test(test_food_not_a_robot),
