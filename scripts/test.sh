@@ -16,7 +16,9 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DNEAT_SANITIZE=ON >/
 ninja -C build-asan
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
-echo "== identical duel traces from the -O2 and the -O0 sanitizer builds"
+echo "== identical duel traces from the -O3, -O2 and -O0 sanitizer builds"
+cmake -S . -B build-o2 -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNEAT_DUELSIM_O3=OFF -DNEAT_TESTS=OFF >/dev/null
+ninja -C build-o2 duel_evolve
 mkdir -p build/nets
 ./build/bin/duel_bench --write-blobs build/nets
 for game in "builtin:forager-hunter builtin:forager --food 0" "builtin:forager builtin:forager-hunter --food 77 --side east" \
@@ -24,10 +26,13 @@ for game in "builtin:forager-hunter builtin:forager --food 0" "builtin:forager b
             "build/nets/net202a.blob builtin:forager-hunter --food 140 --side east" \
             "build/nets/net202b.blob build/nets/net39a.blob"; do
   # shellcheck disable=SC2086
-  ./build/bin/duel_evolve play $game --trace build/trace-o2.csv > /dev/null
+  ./build/bin/duel_evolve play $game --trace build/trace-o3.csv > /dev/null
+  # shellcheck disable=SC2086
+  ./build-o2/bin/duel_evolve play $game --trace build/trace-o2.csv > /dev/null
   # shellcheck disable=SC2086
   ./build-asan/bin/duel_evolve play $game --trace build/trace-o0.csv > /dev/null
-  cmp build/trace-o2.csv build/trace-o0.csv
+  cmp build/trace-o3.csv build/trace-o2.csv
+  cmp build/trace-o3.csv build/trace-o0.csv
 done
 echo "traces identical"
 
