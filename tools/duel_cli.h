@@ -38,5 +38,6 @@ int duel_cmd_config(int argc, char **argv);
 int duel_cmd_ladder(int argc, char **argv);
 int duel_cmd_inspect(int argc, char **argv);
 int duel_cmd_dot(int argc, char **argv);
+int duel_cmd_export(int argc, char **argv);
 
 #endif /* DUEL_CLI_H */

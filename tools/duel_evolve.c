@@ -15,6 +15,7 @@ static void duel_usage(FILE *f)
                "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
                "       duel_evolve inspect BLOB\n"
                "       duel_evolve dot BLOB [-o FILE.dot]\n"
+               "       duel_evolve export BLOB --c-array NAME [-o FILE.c]\n"
                "Robot duels of spec v%d (docs/duelsim.md).\n", DUEL_SPEC_VERSION);
 }
 
@@ -38,6 +39,8 @@ int main(int argc, char **argv)
         return duel_cmd_inspect(argc - 2, argv + 2);
     if (strcmp(argv[1], "dot") == 0)
         return duel_cmd_dot(argc - 2, argv + 2);
+    if (strcmp(argv[1], "export") == 0)
+        return duel_cmd_export(argc - 2, argv + 2);
     fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
     duel_usage(stderr);
     return 2;
