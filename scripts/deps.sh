@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages the build, the tests and the benchmarks need, if any is missing.
 set -euo pipefail
 PKGS="build-essential cmake ninja-build pkg-config libcmocka-dev libinih-dev clang llvm libclang-rt-14-dev \
-      gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi valgrind graphviz"
+      gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi valgrind graphviz \
+      libosmesa6-dev libpng-dev ffmpeg"
 missing=""
 for p in $PKGS; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -31,6 +31,11 @@ void duel_trace_header(FILE *f);
 void duel_trace_row(void *file, const duel_world *w, const nrt_q15 in[2][DUEL_N_INPUTS],
                     const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev);
 
+/* The `dot` command's Graphviz picture of the champion blob at path, written
+ * to f (tools/duel_inspect.c). 0, or -1 after one line on stderr naming the
+ * file and the problem (unreadable or invalid blob, out of memory). */
+int duel_dot_blob(FILE *f, const char *path);
+
 int duel_cmd_play(int argc, char **argv);
 int duel_cmd_run(int argc, char **argv);
 int duel_cmd_resume(int argc, char **argv);
@@ -38,6 +43,8 @@ int duel_cmd_config(int argc, char **argv);
 int duel_cmd_ladder(int argc, char **argv);
 int duel_cmd_inspect(int argc, char **argv);
 int duel_cmd_dot(int argc, char **argv);
+int duel_cmd_render(int argc, char **argv);
+int duel_cmd_render_net(int argc, char **argv);
 int duel_cmd_export(int argc, char **argv);
 
 #endif /* DUEL_CLI_H */

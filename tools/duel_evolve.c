@@ -15,6 +15,9 @@ static void duel_usage(FILE *f)
                "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
                "       duel_evolve inspect BLOB\n"
                "       duel_evolve dot BLOB [-o FILE.dot]\n"
+               "       duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [--size 600] "
+               "[--every N] [--sensors] [--video FILE.mp4] [--fps 30]\n"
+               "       duel_evolve render-net BLOB --out FILE.png\n"
                "       duel_evolve export BLOB --c-array NAME [-o FILE.c]\n"
                "Robot duels of spec v%d (docs/duelsim.md).\n", DUEL_SPEC_VERSION);
 }
@@ -39,6 +42,10 @@ int main(int argc, char **argv)
         return duel_cmd_inspect(argc - 2, argv + 2);
     if (strcmp(argv[1], "dot") == 0)
         return duel_cmd_dot(argc - 2, argv + 2);
+    if (strcmp(argv[1], "render") == 0)
+        return duel_cmd_render(argc - 2, argv + 2);
+    if (strcmp(argv[1], "render-net") == 0)
+        return duel_cmd_render_net(argc - 2, argv + 2);
     if (strcmp(argv[1], "export") == 0)
         return duel_cmd_export(argc - 2, argv + 2);
     fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);

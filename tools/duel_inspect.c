@@ -356,6 +356,16 @@ static void duel_dot_write(FILE *f, const duel_insp *x)
     fprintf(f, "}\n");
 }
 
+int duel_dot_blob(FILE *f, const char *path)
+{
+    duel_insp x;
+    if (duel_insp_open(&x, path) != 0)
+        return -1;
+    duel_dot_write(f, &x);
+    duel_insp_free(&x);
+    return 0;
+}
+
 /* Writes the graph to path through a temporary file in the same directory,
  * renamed over path only once complete. Returns 0, 2 (cannot create) or 1. */
 static int duel_dot_to_file(const duel_insp *x, const char *path)

@@ -1,0 +1,435 @@
+/* duel_render_cmd.c - `duel_evolve render` (a game's frames as PNG files, and a video through ffmpeg) and `duel_evolve render-net` (a champion's network as PNG through Graphviz dot). */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "duel_cli.h"
+#include "duel_exec.h"
+#include "duel_files.h"
+#include "duel_render.h"
+#include "duel_replay.h"
+
+#define DUEL_RC_PATH 4096
+
+static const char duel_render_usage_line[] =
+    "usage: duel_evolve render (LOG.lcm | A B [--food K|training] [--side west|east]) --out DIR [--size 600] "
+    "[--every N] [--sensors] [--video FILE.mp4] [--fps 30]\n";
+
+/* "--opt N" with lo <= N <= hi. 0, or -1 after one line on stderr. */
+static int duel_rc_int(const char *cmd, const char *opt, const char *v, long lo, long hi, int *out)
+{
+    char *end;
+    long k;
+    errno = 0;
+    k = strtol(v, &end, 10);
+    if (*v == '\0' || *end != '\0' || errno || k < lo || k > hi) {
+        fprintf(stderr, "duel_evolve: %s: %s takes an integer from %ld to %ld, not '%s'\n", cmd, opt, lo, hi, v);
+        return -1;
+    }
+    *out = (int)k;
+    return 0;
+}
+
+/* A file name an external program cannot take for an option. */
+static const char *duel_rc_arg(const char *path, char *buf, size_t len)
+{
+    if (path[0] != '-')
+        return path;
+    snprintf(buf, len, "./%s", path);
+    return buf;
+}
+
+/* Creates and removes a file named path + suffix: the place can be written
+ * (as root too, where access() says yes to everything). 0 or -1 (errno). */
+static int duel_rc_probe(const char *path, const char *suffix)
+{
+    char tmp[DUEL_RC_PATH];
+    int fd;
+    if (snprintf(tmp, sizeof tmp, "%s%s", path, suffix) >= (int)sizeof tmp) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    if (fd < 0)
+        return -1;
+    close(fd);
+    return unlink(tmp);
+}
+
+static double duel_rc_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static const char *duel_rc_outcome(int outcome)
+{
+    switch (outcome) {
+    case DUEL_WEST_WINS: return "west wins (collision, more energy)";
+    case DUEL_EAST_WINS: return "east wins (collision, more energy)";
+    case DUEL_DRAW: return "draw (collision at equal energy)";
+    case DUEL_TIMEOUT: return "timeout";
+    default: return "unfinished";
+    }
+}
+
+/* The game's frames from an LCM event log (`play --lcm-log`). 0, or -1
+ * after one line on stderr. */
+static int duel_rc_read_log(duel_replay *rep, const char *path)
+{
+    (void)rep;
+    fprintf(stderr, "duel_evolve: render: %s: LCM log input needs the LCM reader (not built)\n", path);
+    return -1;
+}
+
+/* The game between the controllers specs a and b, a starting west or east. */
+static int duel_rc_play(duel_replay *rep, const char *a_spec, const char *b_spec, int food, int a_west)
+{
+    duel_cli_ctrl a, b;
+    int err;
+    if (duel_cli_ctrl_open(&a, a_spec) != 0)
+        return -1;
+    if (duel_cli_ctrl_open(&b, b_spec) != 0) {
+        duel_cli_ctrl_close(&a);
+        return -1;
+    }
+    err = a_west ? duel_replay_from_game(rep, &a.ctrl, &b.ctrl, food) : duel_replay_from_game(rep, &b.ctrl, &a.ctrl, food);
+    snprintf(rep->west, sizeof rep->west, "%s", a_west ? a.name : b.name);
+    snprintf(rep->east, sizeof rep->east, "%s", a_west ? b.name : a.name);
+    duel_cli_ctrl_close(&a);
+    duel_cli_ctrl_close(&b);
+    if (err) {
+        fprintf(stderr, "duel_evolve: render: the game failed (%d)\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* ffmpeg turns DIR/frame-00000.png ... (n frames) into an MP4 (H.264,
+ * yuv420p, even dimensions) at fps, written to a temporary name and renamed
+ * to video. 0, or -1 after one line on stderr. */
+static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fps, const char *video)
+{
+    char pattern[DUEL_RC_PATH], out[DUEL_RC_PATH], tmp[DUEL_RC_PATH], rate[16], frames[16], msg[512];
+    char *argv[32];
+    size_t i, j = 0;
+    int argc = 0, st;
+
+    for (i = 0; dir[i] != '\0' && j + 2 < sizeof pattern; i++) { /* '%' is the pattern's escape */
+        if (dir[i] == '%')
+            pattern[j++] = '%';
+        pattern[j++] = dir[i];
+    }
+    pattern[j] = '\0';
+    if (snprintf(tmp, sizeof tmp, "%s.%ld.tmp", video, (long)getpid()) >= (int)sizeof tmp ||
+        strlen(pattern) + 16 >= sizeof pattern || snprintf(out, sizeof out, "file:%s", tmp) >= (int)sizeof out) {
+        fprintf(stderr, "duel_evolve: render: %s: name too long\n", video);
+        return -1;
+    }
+    strcat(pattern, "/frame-%05d.png");
+    snprintf(rate, sizeof rate, "%d", fps);
+    snprintf(frames, sizeof frames, "%u", n);
+    argv[argc++] = (char *)"ffmpeg";
+    argv[argc++] = (char *)"-nostdin";
+    argv[argc++] = (char *)"-hide_banner";
+    argv[argc++] = (char *)"-loglevel";
+    argv[argc++] = (char *)"error";
+    argv[argc++] = (char *)"-framerate";
+    argv[argc++] = rate;
+    argv[argc++] = (char *)"-start_number";
+    argv[argc++] = (char *)"0";
+    argv[argc++] = (char *)"-i";
+    argv[argc++] = pattern;
+    argv[argc++] = (char *)"-frames:v";
+    argv[argc++] = frames;
+    argv[argc++] = (char *)"-vf";
+    argv[argc++] = (char *)"pad=ceil(iw/2)*2:ceil(ih/2)*2";
+    argv[argc++] = (char *)"-c:v";
+    argv[argc++] = (char *)"libx264";
+    argv[argc++] = (char *)"-pix_fmt";
+    argv[argc++] = (char *)"yuv420p";
+    argv[argc++] = (char *)"-f";
+    argv[argc++] = (char *)"mp4";
+    argv[argc++] = (char *)"-y";
+    argv[argc++] = out;
+    argv[argc] = NULL;
+    st = duel_exec_run(ffmpeg, argv, msg, sizeof msg);
+    if (st != 0) {
+        remove(tmp);
+        if (st > 0)
+            fprintf(stderr, "duel_evolve: render: %s: ffmpeg failed (exit status %d)%s%s\n", video, st,
+                    msg[0] ? ": " : "", msg);
+        else
+            fprintf(stderr, "duel_evolve: render: %s: %s\n", video, msg);
+        return -1;
+    }
+    if (rename(tmp, video) != 0) {
+        fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
+        remove(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+int duel_cmd_render(int argc, char **argv)
+{
+    const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL;
+    char ffmpeg[DUEL_RC_PATH], path[DUEL_RC_PATH], err[512], suffix[64];
+    int i, n_pos = 0, size = 600, every = 1, fps = 30, food = DUEL_TRAINING, a_west = 1, game_opts = 0, rc = 0;
+    unsigned flags = 0, n_out = 0;
+    duel_replay rep;
+    duel_render ren;
+    size_t k;
+    double t0, secs;
+
+    if (argc == 0) {
+        fputs(duel_render_usage_line, stderr);
+        return 2;
+    }
+    for (i = 0; i < argc; i++) {
+        const char *opt = argv[i];
+        if (opt[0] != '-') {
+            if (n_pos == 2) {
+                fprintf(stderr, "duel_evolve: render: unexpected argument '%s' (a log, or two controllers)\n", opt);
+                return 2;
+            }
+            pos[n_pos++] = opt;
+            continue;
+        }
+        if (strcmp(opt, "--sensors") == 0) {
+            flags |= DUEL_RENDER_SENSORS;
+            continue;
+        }
+        if (i + 1 >= argc) {
+            fprintf(stderr, "duel_evolve: render: %s needs a value\n", opt);
+            return 2;
+        }
+        if (strcmp(opt, "--out") == 0) {
+            dir = argv[++i];
+        } else if (strcmp(opt, "--video") == 0) {
+            video = argv[++i];
+        } else if (strcmp(opt, "--size") == 0) {
+            if (duel_rc_int("render", opt, argv[++i], DUEL_RENDER_MIN_SIZE, DUEL_RENDER_MAX_SIZE, &size) != 0)
+                return 2;
+        } else if (strcmp(opt, "--every") == 0) {
+            if (duel_rc_int("render", opt, argv[++i], 1, 1000, &every) != 0)
+                return 2;
+        } else if (strcmp(opt, "--fps") == 0) {
+            if (duel_rc_int("render", opt, argv[++i], 1, 120, &fps) != 0)
+                return 2;
+        } else if (strcmp(opt, "--food") == 0) {
+            game_opts = 1;
+            if (strcmp(argv[++i], "training") == 0)
+                food = DUEL_TRAINING;
+            else if (duel_rc_int("render", opt, argv[i], 0, DUEL_CONFIGS - 1, &food) != 0)
+                return 2;
+        } else if (strcmp(opt, "--side") == 0) {
+            const char *v = argv[++i];
+            game_opts = 1;
+            if (strcmp(v, "west") != 0 && strcmp(v, "east") != 0) {
+                fprintf(stderr, "duel_evolve: render: --side takes west or east, not '%s'\n", v);
+                return 2;
+            }
+            a_west = strcmp(v, "west") == 0;
+        } else {
+            fprintf(stderr, "duel_evolve: render: unknown option '%s' (see duel_evolve --help)\n", opt);
+            return 2;
+        }
+    }
+    if (n_pos == 0 || dir == NULL) {
+        fputs(duel_render_usage_line, stderr);
+        return 2;
+    }
+    if (n_pos == 1 && game_opts) {
+        fprintf(stderr, "duel_evolve: render: --food and --side choose a game to play, not one in a log\n");
+        return 2;
+    }
+    /* everything that can be checked before the game is played and drawn */
+    if (video != NULL) {
+        if (duel_exec_find("ffmpeg", ffmpeg, sizeof ffmpeg) != 0) {
+            fprintf(stderr, "duel_evolve: render: --video needs ffmpeg, which is not on PATH (Debian: apt-get install "
+                            "ffmpeg)\n");
+            return 2;
+        }
+        snprintf(suffix, sizeof suffix, ".%ld.tmp", (long)getpid());
+        if (duel_rc_probe(video, suffix) != 0) {
+            fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
+            return 2;
+        }
+    }
+    if (strlen(dir) + 32 > sizeof path) {
+        fprintf(stderr, "duel_evolve: render: %s: name too long\n", dir);
+        return 2;
+    }
+    if (duel_mkdir(dir) != 0) {
+        fprintf(stderr, "duel_evolve: render: %s: cannot create the directory: %s\n", dir, strerror(errno));
+        return 2;
+    }
+    snprintf(suffix, sizeof suffix, "/.probe.%ld.tmp", (long)getpid());
+    if (duel_rc_probe(dir, suffix) != 0) {
+        fprintf(stderr, "duel_evolve: render: %s: cannot write in the directory: %s\n", dir, strerror(errno));
+        return 2;
+    }
+
+    duel_replay_init(&rep);
+    if (n_pos == 1 ? duel_rc_read_log(&rep, pos[0]) : duel_rc_play(&rep, pos[0], pos[1], food, a_west)) {
+        duel_replay_free(&rep);
+        return 2;
+    }
+    if (rep.n == 0) {
+        fprintf(stderr, "duel_evolve: render: %s: no frame to draw\n", pos[0]);
+        duel_replay_free(&rep);
+        return 2;
+    }
+    if (duel_render_open(&ren, size, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: render: %s\n", err);
+        duel_replay_free(&rep);
+        return 1;
+    }
+
+    /* frames 0, N, 2N, ... and always the last one (the final state) */
+    t0 = duel_rc_now();
+    for (k = 0;; k += (size_t)every) {
+        if (k > rep.n - 1)
+            k = rep.n - 1;
+        duel_render_frame(&ren, &rep.frames[k], flags);
+        snprintf(path, sizeof path, "%s/frame-%05u.png", dir, n_out);
+        if (duel_render_write_png(&ren, path, err, sizeof err) != 0) {
+            fprintf(stderr, "duel_evolve: render: %s\n", err);
+            rc = 1;
+            break;
+        }
+        n_out++;
+        if (k == rep.n - 1)
+            break;
+    }
+    secs = duel_rc_now() - t0;
+    duel_render_close(&ren);
+
+    if (rc == 0) {
+        const duel_frame *last = &rep.frames[rep.n - 1];
+        if (rep.food_config < 0)
+            printf("training food, west %s, east %s: ", rep.west, rep.east);
+        else
+            printf("food configuration %d, west %s, east %s: ", rep.food_config, rep.west, rep.east);
+        printf("%s after %u steps\n", duel_rc_outcome(last->ev.outcome), (unsigned)last->t);
+        printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every %d steps, and the final state)\n",
+               n_out, size, size, dir, n_out - 1, every);
+        printf("%u frames in %.2f s (%.1f frames/s, drawing and PNG writing)\n", n_out, secs,
+               secs > 0 ? n_out / secs : 0.0);
+        if (video != NULL) {
+            if (duel_rc_video(ffmpeg, dir, n_out, fps, video) != 0)
+                rc = 1;
+            else
+                printf("video: %s (%u frames at %d frames/s)\n", video, n_out, fps);
+        }
+    }
+    duel_replay_free(&rep);
+    if (fflush(stdout) != 0 && rc == 0) {
+        fprintf(stderr, "duel_evolve: render: cannot write the output: %s\n", strerror(errno));
+        rc = 1;
+    }
+    return rc;
+}
+
+/* ---- render-net ----------------------------------------------------------- */
+
+int duel_cmd_render_net(int argc, char **argv)
+{
+    const char *blob = NULL, *out = NULL;
+    char dot[DUEL_RC_PATH], tmp_dot[DUEL_RC_PATH], tmp_png[DUEL_RC_PATH], a1[DUEL_RC_PATH + 2], a2[DUEL_RC_PATH + 4];
+    char msg[512], *text = NULL, *dargv[6];
+    size_t text_len = 0;
+    FILE *f;
+    int i, fd, st, rc = 0;
+
+    for (i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--out") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "duel_evolve: render-net: --out needs a file name\n");
+                return 2;
+            }
+            out = argv[++i];
+        } else if (argv[i][0] == '-' || blob != NULL) {
+            fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png\n");
+            return 2;
+        } else {
+            blob = argv[i];
+        }
+    }
+    if (blob == NULL || out == NULL) {
+        fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png\n");
+        return 2;
+    }
+    if (duel_exec_find("dot", dot, sizeof dot) != 0) {
+        fprintf(stderr, "duel_evolve: render-net: needs Graphviz dot, which is not on PATH (Debian: apt-get install "
+                        "graphviz)\n");
+        return 2;
+    }
+    /* the picture in memory first: a bad blob is reported before any file is made */
+    f = open_memstream(&text, &text_len);
+    if (f == NULL) {
+        fprintf(stderr, "duel_evolve: render-net: out of memory\n");
+        return 1;
+    }
+    if (duel_dot_blob(f, blob) != 0) {
+        fclose(f);
+        free(text);
+        return 2;
+    }
+    if (fclose(f) != 0) {
+        fprintf(stderr, "duel_evolve: render-net: out of memory\n");
+        free(text);
+        return 1;
+    }
+    if (snprintf(tmp_dot, sizeof tmp_dot, "%s.%ld.dot.tmp", out, (long)getpid()) >= (int)sizeof tmp_dot ||
+        snprintf(tmp_png, sizeof tmp_png, "%s.%ld.tmp", out, (long)getpid()) >= (int)sizeof tmp_png) {
+        fprintf(stderr, "duel_evolve: render-net: %s: name too long\n", out);
+        free(text);
+        return 2;
+    }
+    fd = open(tmp_dot, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
+        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+            remove(tmp_dot);
+        }
+        free(text);
+        return 2;
+    }
+    st = fwrite(text, 1, text_len, f) == text_len;
+    free(text);
+    if (fclose(f) != 0 || !st) {
+        fprintf(stderr, "duel_evolve: render-net: %s: write failed: %s\n", out, strerror(errno));
+        remove(tmp_dot);
+        return 1;
+    }
+    snprintf(a1, sizeof a1, "-o%s", tmp_png);
+    dargv[0] = (char *)"dot";
+    dargv[1] = (char *)"-Tpng";
+    dargv[2] = a1;
+    dargv[3] = (char *)duel_rc_arg(tmp_dot, a2, sizeof a2);
+    dargv[4] = NULL;
+    st = duel_exec_run(dot, dargv, msg, sizeof msg);
+    remove(tmp_dot);
+    if (st != 0) {
+        if (st > 0)
+            fprintf(stderr, "duel_evolve: render-net: %s: dot failed (exit status %d)%s%s\n", out, st,
+                    msg[0] ? ": " : "", msg);
+        else
+            fprintf(stderr, "duel_evolve: render-net: %s: %s\n", out, msg);
+        rc = 1;
+    } else if (rename(tmp_png, out) != 0) {
+        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
+        rc = 1;
+    }
+    if (rc != 0)
+        remove(tmp_png);
+    return rc;
+}
