@@ -23,7 +23,6 @@ struct neat_coev {
     neat_coev_params cp;
     uint64_t seed;
     uint32_t generation;
-    int broken;
     neat_pop *pop[2];
     neat_glist hof[2];    /* hof[i].g[t]: population i's best of generation t */
     neat_glist champs[2]; /* champions of its best species last generation, best first */
@@ -41,6 +40,9 @@ struct neat_coev {
 #define NEAT_TAG_HOST 0x484f5354u   /* host games */
 #define NEAT_TAG_CMP 0x434d50u      /* comparisons */
 
+#define NEAT_COEV_MAX_CHAMPS 64        /* species_opponents at most */
+#define NEAT_COEV_MAX_CONFIGS 30000u   /* compare_configs at most: a comparison's wins fit 16 bits */
+
 neat_coev_params neat_coev_params_default(void)
 {
     neat_coev_params cp;
@@ -54,7 +56,7 @@ neat_coev_params neat_coev_params_default(void)
 int neat_coev_params_check(const neat_coev_params *cp, const char **field)
 {
     const char *bad = NULL;
-    if (cp->species_opponents > 1000)
+    if (cp->species_opponents > NEAT_COEV_MAX_CHAMPS)
         bad = "species_opponents";
     else if (cp->hof_opponents > 1000)
         bad = "hof_opponents";
@@ -62,7 +64,7 @@ int neat_coev_params_check(const neat_coev_params *cp, const char **field)
         bad = "hof_opponents";
     else if (cp->first_opponents == 0 || cp->first_opponents > 1000)
         bad = "first_opponents";
-    else if (cp->compare_configs == 0 || cp->compare_configs > 30000)
+    else if (cp->compare_configs == 0 || cp->compare_configs > NEAT_COEV_MAX_CONFIGS)
         bad = "compare_configs";
     if (field != NULL)
         *field = bad;
@@ -202,6 +204,25 @@ int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d)
     return NEAT_OK;
 }
 
+/* Every genome kept (halls of fame, species champions, champion, dominants)
+ * within max_nodes, as the checkpoint requires. */
+static int neat_coev_kept_fit(const neat_coev *c, uint32_t max_nodes)
+{
+    uint32_t i, k;
+    for (i = 0; i < 2; i++) {
+        for (k = 0; k < c->hof[i].n; k++)
+            if (c->hof[i].g[k].n_nodes > max_nodes)
+                return 0;
+        for (k = 0; k < c->champs[i].n; k++)
+            if (c->champs[i].g[k].n_nodes > max_nodes)
+                return 0;
+    }
+    for (k = 0; k < c->n_dom; k++)
+        if (c->dom[k].g.n_nodes > max_nodes)
+            return 0;
+    return !c->have_champion || c->champion.n_nodes <= max_nodes;
+}
+
 int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp)
 {
     const char *field;
@@ -210,7 +231,7 @@ int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_par
     if (c == NULL || p == NULL || cp == NULL)
         return NEAT_E_ARG;
     old = *neat_pop_params(c->pop[0]);
-    if (neat_coev_params_check(cp, &field) != NEAT_OK)
+    if (neat_coev_params_check(cp, &field) != NEAT_OK || !neat_coev_kept_fit(c, p->max_nodes))
         return NEAT_E_PARAM;
     err = neat_pop_set_params(c->pop[0], p);
     if (!err) {
@@ -352,10 +373,22 @@ static void neat_pop_report(const neat_pop *pop, const uint32_t *wins, uint64_t 
     r->games = games;
 }
 
+/* A copy of host i carrying its wins as fitness. */
+static int neat_copy_scored(neat_genome *dst, const neat_pop *pop, uint32_t i, const uint32_t *wins,
+                            const neat_alloc *a)
+{
+    int err = neat_genome_copy(dst, neat_pop_genome(pop, i), a);
+    if (!err) {
+        dst->fitness = (double)wins[i];
+        dst->has_fitness = 1;
+    }
+    return err;
+}
+
 /* Everything a generation adds, prepared before anything changes. */
 typedef struct neat_gen_out {
     neat_genome hof[2], champion, dom;
-    neat_genome champs[2][64];
+    neat_genome champs[2][NEAT_COEV_MAX_CHAMPS];
     uint32_t n_champs[2];
     uint16_t *wins, *losses;
     uint32_t n_beaten;
@@ -381,6 +414,7 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
     const neat_genome *opp[2][2048];
     uint32_t n_opp[2], size, p, h, j, s, k, n = 0, best[2], champ_pop, cw[2];
     uint32_t *wins[2] = {NULL, NULL}, *idx = NULL, *tmp = NULL;
+    neat_pop *next[2] = {NULL, NULL};
     uint32_t beaten_w[1024], beaten_l[1024];
     neat_gen_out o;
     neat_coev_report r;
@@ -389,10 +423,8 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
 
     if (c == NULL || play == NULL)
         return NEAT_E_ARG;
-    if (c->broken)
-        return NEAT_E_STATE;
     if (c->cp.first_opponents > 2048 || c->cp.species_opponents + c->cp.hof_opponents > 2048 ||
-        c->cp.species_opponents > 64 || c->n_dom >= 1024)
+        c->cp.species_opponents > NEAT_COEV_MAX_CHAMPS || c->n_dom >= 1024)
         return NEAT_E_PARAM;
     memset(&r, 0, sizeof r);
     memset(&o, 0, sizeof o);
@@ -481,12 +513,13 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
     }
     r.games += r.dominance_games;
 
-    /* 4. everything the generation adds, copied before anything changes */
+    /* 4. everything the generation adds, copied before anything changes
+     * (with this generation's fitness: the population's is set in step 5) */
     for (p = 0; p < 2 && !err; p++) {
         uint32_t nc = neat_species_champions(c->pop[p], wins[p], c->cp.species_opponents, idx, tmp);
-        err = neat_genome_copy(&o.hof[p], neat_pop_genome(c->pop[p], best[p]), &c->a);
+        err = neat_copy_scored(&o.hof[p], c->pop[p], best[p], wins[p], &c->a);
         for (k = 0; k < nc && !err; k++) {
-            err = neat_genome_copy(&o.champs[p][k], neat_pop_genome(c->pop[p], idx[k]), &c->a);
+            err = neat_copy_scored(&o.champs[p][k], c->pop[p], idx[k], wins[p], &c->a);
             o.n_champs[p] = k + 1;
         }
         if (!err)
@@ -495,9 +528,9 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
             err = neat_mem_reserve(&c->a, (void **)&c->champs[p].g, &c->champs[p].cap, nc, sizeof(neat_genome));
     }
     if (!err)
-        err = neat_genome_copy(&o.champion, champ, &c->a);
+        err = neat_copy_scored(&o.champion, c->pop[champ_pop], best[champ_pop], wins[champ_pop], &c->a);
     if (!err && o.new_dom) {
-        err = neat_genome_copy(&o.dom, champ, &c->a);
+        err = neat_copy_scored(&o.dom, c->pop[champ_pop], best[champ_pop], wins[champ_pop], &c->a);
         if (!err)
             err = neat_mem_reserve(&c->a, (void **)&c->dom, &c->cap_dom, c->n_dom + 1u, sizeof(neat_dom));
         if (!err && o.n_beaten > 0) {
@@ -514,22 +547,30 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
     if (err)
         goto done;
 
-    /* 5. fitness and reproduction */
-    for (p = 0; p < 2 && !err; p++)
+    /* 5. fitness and reproduction, on copies of the populations (through
+     * their checkpoints, which give the same run): a failed epoch leaves
+     * both as they were, fitness, species order and representatives too */
+    for (p = 0; p < 2 && !err; p++) {
+        uint8_t *pb = NULL;
+        size_t pl = 0;
+        err = neat_pop_save(c->pop[p], &pb, &pl);
+        if (!err) {
+            err = neat_pop_load(&next[p], pb, pl, &c->a, NULL);
+            neat_pop_buf_free(c->pop[p], pb, pl);
+        }
         for (h = 0; h < size && !err; h++)
-            err = neat_pop_set_fitness(c->pop[p], h, (double)wins[p][h]);
-    if (!err)
-        err = neat_pop_epoch(c->pop[0]);
-    if (!err) {
-        err = neat_pop_epoch(c->pop[1]);
-        if (err)
-            c->broken = 1; /* population 0 moved on without population 1 */
+            err = neat_pop_set_fitness(next[p], h, (double)wins[p][h]);
+        if (!err)
+            err = neat_pop_epoch(next[p]);
     }
     if (err)
         goto done;
 
     /* 6. commit: moves only, nothing can fail */
     for (p = 0; p < 2; p++) {
+        neat_pop_free(c->pop[p]);
+        c->pop[p] = next[p];
+        next[p] = NULL;
         c->hof[p].g[c->hof[p].n++] = o.hof[p];
         neat_genome_init(&o.hof[p]);
         for (k = 0; k < c->champs[p].n; k++)
@@ -564,8 +605,10 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
         *rep = r;
 done:
     neat_gen_out_free(&o, &c->a);
-    for (p = 0; p < 2; p++)
+    for (p = 0; p < 2; p++) {
+        neat_pop_free(next[p]);
         neat_mem_free(&c->a, wins[p], size * sizeof(uint32_t));
+    }
     neat_mem_free(&c->a, idx, 2u * size * sizeof(uint32_t));
     return err;
 }
@@ -588,8 +631,6 @@ int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len)
     uint32_t i, k;
     if (c == NULL || buf == NULL || len == NULL)
         return NEAT_E_ARG;
-    if (c->broken)
-        return NEAT_E_STATE;
     memset(&w, 0, sizeof w);
     w.a = &c->a;
     neat_put(&w, neat_coev_magic, 8);
@@ -742,7 +783,8 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
             r.off = at;
             neat_fail(&r, NEAT_E_FORMAT);
         }
-        neat_get_glist(&r, &c->champs[i], c->cp.species_opponents < 64 ? c->cp.species_opponents : 64, pp, &c->a);
+        /* kept under an earlier species_opponents, perhaps larger (neat_coev_set_params) */
+        neat_get_glist(&r, &c->champs[i], NEAT_COEV_MAX_CHAMPS, pp, &c->a);
     }
     if (!r.err) {
         size_t at = r.off;
@@ -794,7 +836,8 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
                 at = r.off;
                 wv = neat_get_u32(&r);
                 lv = neat_get_u32(&r);
-                if (!r.err && (wv <= lv || wv + lv > 2u * c->cp.compare_configs)) {
+                /* played under an earlier compare_configs, perhaps larger */
+                if (!r.err && (wv <= lv || wv > 2u * NEAT_COEV_MAX_CONFIGS || wv + lv > 2u * NEAT_COEV_MAX_CONFIGS)) {
                     r.off = at;
                     neat_fail(&r, NEAT_E_FORMAT);
                 }
