@@ -81,10 +81,9 @@ typedef struct neat_coev_report {
 
 /* One generation: opponents, host games, fitness (wins), the comparison of
  * the two bests, the hall of fame, the dominance tournament, reproduction.
- * On an error from play or the allocator nothing changes, except after
- * NEAT_E_NOMEM from the second population's epoch, which leaves the
- * coevolution unusable (NEAT_E_STATE from then on): reload the last
- * checkpoint. */
+ * On an error from play or the allocator nothing changes (the populations
+ * reproduce on copies that replace them only when everything succeeded), so
+ * a retry gives the same generation. */
 int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *rep);
 
 uint32_t neat_coev_generation(const neat_coev *c); /* the next generation to play */
