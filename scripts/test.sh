@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite: unit tests (normal and ASan+UBSan builds), the blob fuzzer,
-# the Cortex-M0+ cross build of the runtime with its sizes, and a short benchmark smoke run.
+# the Cortex-M0+ cross build of the runtime with its sizes, the firmware figures under QEMU, and a
+# short benchmark smoke run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -52,6 +53,10 @@ if arm-none-eabi-nm -u build-arm/libduelsim.a | grep -E '__aeabi_[fd]|__(add|sub
   echo "FAIL: duelsim needs floating point on Cortex-M0+"; exit 1
 fi
 echo "duelsim links no floating-point helper"
+
+echo "== firmware: the runtime on Cortex-M0+, RAM, instructions per step under QEMU (docs/firmware.md)"
+# (the QEMU identity tests themselves are in ctest: tests/firmware)
+./scripts/firmware_figures.sh build
 
 echo "== fuzzing the blob loader (libFuzzer, 60 s)"
 CC=clang cmake -S . -B build-fuzz -G Ninja -DNEAT_FUZZ=ON -DNEAT_TESTS=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
