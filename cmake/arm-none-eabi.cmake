@@ -1,5 +1,5 @@
-# Toolchain for bare-metal Arm Cortex-M (Debian gcc-arm-none-eabi; libnewlib-arm-none-eabi is not
-# needed by the libraries: the runtime and duelsim take nothing from libc but memcpy and memset).
+# Toolchain for bare-metal Arm Cortex-M (Debian gcc-arm-none-eabi, with libnewlib-arm-none-eabi for
+# the C headers: the runtime and duelsim link nothing from a C library but memcpy and memset).
 # Pick the core with -DNEAT_ARM_CPU=
 #   cortex-m0 | cortex-m0plus (default) | cortex-m3 | cortex-m4 (soft-float ABI) | cortex-m4f (FPU,
 #   hard-float ABI) | cortex-m7
