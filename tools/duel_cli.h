@@ -43,6 +43,8 @@ int duel_cmd_config(int argc, char **argv);
 int duel_cmd_ladder(int argc, char **argv);
 int duel_cmd_inspect(int argc, char **argv);
 int duel_cmd_dot(int argc, char **argv);
+int duel_cmd_node(int argc, char **argv);
+int duel_cmd_log(int argc, char **argv);
 int duel_cmd_render(int argc, char **argv);
 int duel_cmd_render_net(int argc, char **argv);
 int duel_cmd_export(int argc, char **argv);

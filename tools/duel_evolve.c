@@ -12,7 +12,13 @@ static void duel_usage(FILE *f)
                "[--json]\n"
                "       duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
                "       duel_evolve ladder DIR\n"
-               "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv]\n"
+               "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
+               "[--lcm-log FILE.lcm]\n"
+               "       duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
+               "       duel_evolve node world --food K|training --lcm URL [--timeout-ms N] [--wait-ms N] "
+               "[--period-ms N] [--lcm-log FILE.lcm]\n"
+               "       duel_evolve log info FILE.lcm\n"
+               "       duel_evolve log dump FILE.lcm [--channel C]\n"
                "       duel_evolve inspect BLOB\n"
                "       duel_evolve dot BLOB [-o FILE.dot]\n"
                "       duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [--size 600] "
@@ -42,6 +48,10 @@ int main(int argc, char **argv)
         return duel_cmd_inspect(argc - 2, argv + 2);
     if (strcmp(argv[1], "dot") == 0)
         return duel_cmd_dot(argc - 2, argv + 2);
+    if (strcmp(argv[1], "node") == 0)
+        return duel_cmd_node(argc - 2, argv + 2);
+    if (strcmp(argv[1], "log") == 0)
+        return duel_cmd_log(argc - 2, argv + 2);
     if (strcmp(argv[1], "render") == 0)
         return duel_cmd_render(argc - 2, argv + 2);
     if (strcmp(argv[1], "render-net") == 0)

@@ -4,10 +4,12 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_lcm.h"
 
 static void duel_play_usage(void)
 {
-    fprintf(stderr, "usage: duel_evolve play A B [--games 288 | --food K|training --side west|east] [--trace FILE.csv]\n"
+    fprintf(stderr, "usage: duel_evolve play A B [--games 288 | --food K|training --side west|east] [--trace FILE.csv] "
+                    "[--lcm-log FILE.lcm]\n"
                     "  A, B: a champion blob file or builtin:NAME (idle, spinner, forager, hunter, forager-hunter)\n");
 }
 
@@ -25,7 +27,7 @@ static const char *duel_outcome_text(int outcome)
 int duel_cmd_play(int argc, char **argv)
 {
     duel_cli_ctrl a, b;
-    const char *trace_path = NULL;
+    const char *trace_path = NULL, *lcm_path = NULL;
     int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err;
 
     if (argc < 2) {
@@ -68,13 +70,16 @@ int duel_cmd_play(int argc, char **argv)
             a_west = strcmp(v, "west") == 0;
         } else if (strcmp(opt, "--trace") == 0) {
             trace_path = argv[++i];
+        } else if (strcmp(opt, "--lcm-log") == 0) {
+            lcm_path = argv[++i];
         } else {
             fprintf(stderr, "duel_evolve: play: unknown option '%s' (see duel_evolve --help)\n", opt);
             return 2;
         }
     }
-    if (games == 288 && trace_path != NULL) {
-        fprintf(stderr, "duel_evolve: play: --trace records one game, not the 288 of a comparison\n");
+    if (games == 288 && (trace_path != NULL || lcm_path != NULL)) {
+        fprintf(stderr, "duel_evolve: play: %s records one game, not the 288 of a comparison\n",
+                trace_path != NULL ? "--trace" : "--lcm-log");
         return 2;
     }
     if (duel_cli_ctrl_open(&a, argv[0]) != 0)
@@ -96,6 +101,7 @@ int duel_cmd_play(int argc, char **argv)
         }
     } else {
         duel_result r;
+        duel_lcm_game_rec lg;
         FILE *tf = NULL;
         if (trace_path != NULL) {
             tf = fopen(trace_path, "w");
@@ -107,8 +113,30 @@ int duel_cmd_play(int argc, char **argv)
             }
             duel_trace_header(tf);
         }
-        err = a_west ? duel_play(&a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, tf)
-                     : duel_play(&b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, tf);
+        if (lcm_path != NULL) {
+            /* the LCM log records the game; the trace rows pass through it */
+            char lerr[4400];
+            if (duel_lcm_game_rec_open(&lg, lcm_path, food, a_west ? a.name : b.name, a_west ? b.name : a.name, lerr,
+                                       sizeof lerr) != 0) {
+                fprintf(stderr, "duel_evolve: %s\n", lerr);
+                if (tf != NULL)
+                    fclose(tf);
+                duel_cli_ctrl_close(&a);
+                duel_cli_ctrl_close(&b);
+                return 2;
+            }
+            lg.next = tf ? duel_trace_row : NULL;
+            lg.next_ud = tf;
+            err = a_west ? duel_play(&a.ctrl, &b.ctrl, food, &r, duel_lcm_game_rec_step, &lg)
+                         : duel_play(&b.ctrl, &a.ctrl, food, &r, duel_lcm_game_rec_step, &lg);
+            if (duel_lcm_game_rec_close(&lg, err == 0, lerr, sizeof lerr) != 0 && err == 0) {
+                fprintf(stderr, "duel_evolve: %s\n", lerr);
+                rc = 1;
+            }
+        } else {
+            err = a_west ? duel_play(&a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, tf)
+                         : duel_play(&b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, tf);
+        }
         if (tf != NULL && fclose(tf) != 0) {
             fprintf(stderr, "duel_evolve: %s: write failed\n", trace_path);
             rc = 1;
