@@ -15,6 +15,7 @@
 #include "duel_config.h"
 #include "duel_files.h"
 #include "duel_games.h"
+#include "duel_lcm_champ.h"
 #include "neat_coev.h"
 
 /* Set by SIGINT/SIGTERM: the generation in progress finishes and is saved. */
@@ -33,6 +34,7 @@ typedef struct duel_run {
     duel_games *games;
     uint32_t threads;
     int quiet, json, tty;
+    int record_games;          /* --record-champion-games: DIR/games/gen-NNNNN-{west,east}.lcm */
     double started;            /* monotonic seconds at this process's first generation */
     uint32_t first_gen;        /* the generation this process started at */
     uint32_t gen_in_flight;
@@ -144,6 +146,10 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
     snprintf(row, sizeof row, "champions/gen-%05u.blob", rep->generation);
     duel_path(path, sizeof path, R->dir, row);
     if (duel_write_blob(path, neat_coev_champion(R->coev), np) != 0)
+        return -1;
+    if (R->record_games &&
+        duel_lcm_record_champion_games(R->dir, rep->generation, rep->champion_pop, neat_coev_champion(R->coev),
+                                       neat_coev_hof(R->coev, rep->champion_pop ^ 1u, rep->generation), np) != 0)
         return -1;
 
     duel_path(path, sizeof path, R->dir, "generations.csv");
@@ -402,9 +408,12 @@ int duel_cmd_run(int argc, char **argv)
             R.quiet = 1;
         } else if (strcmp(a, "--json") == 0) {
             R.json = 1;
+        } else if (strcmp(a, "--record-champion-games") == 0) {
+            R.record_games = 1;
         } else {
             fprintf(stderr, "duel_evolve run: unknown option '%s' (usage: duel_evolve run --config FILE --out DIR "
-                            "[--seed S] [--generations N] [--threads T] [--quiet] [--json])\n", a);
+                            "[--seed S] [--generations N] [--threads T] [--quiet] [--json] "
+                            "[--record-champion-games])\n", a);
             return 2;
         }
     }
@@ -429,6 +438,11 @@ int duel_cmd_run(int argc, char **argv)
     duel_path(path, sizeof path, R.dir, "champions");
     if (duel_mkdir(R.dir) != 0 || duel_mkdir(path) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R.dir, strerror(errno));
+        return 2;
+    }
+    duel_path(path, sizeof path, R.dir, "games");
+    if (R.record_games && duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
         return 2;
     }
     /* a directory left by a run that died before its first checkpoint starts over */
@@ -479,16 +493,24 @@ int duel_cmd_resume(int argc, char **argv)
             R.quiet = 1;
         } else if (strcmp(a, "--json") == 0) {
             R.json = 1;
+        } else if (strcmp(a, "--record-champion-games") == 0) {
+            R.record_games = 1;
         } else if (a[0] != '-' && R.dir == NULL) {
             R.dir = a;
         } else {
             fprintf(stderr, "duel_evolve resume: unknown option '%s' (usage: duel_evolve resume DIR [--generations "
-                            "N] [--set key=value ...] [--threads T] [--quiet] [--json])\n", a);
+                            "N] [--set key=value ...] [--threads T] [--quiet] [--json] [--record-champion-games])\n",
+                    a);
             return 2;
         }
     }
     if (R.dir == NULL) {
         fprintf(stderr, "duel_evolve resume: which run directory?\n");
+        return 2;
+    }
+    duel_path(path, sizeof path, R.dir, "games");
+    if (R.record_games && duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
         return 2;
     }
     duel_config_default(&R.cfg);
