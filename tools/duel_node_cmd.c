@@ -41,6 +41,13 @@ static lcm_t *duel_node_lcm(const char *url)
         fprintf(stderr, "duel_evolve: node: --lcm URL is required (e.g. tcpq://127.0.0.1:7700)\n");
         return NULL;
     }
+    /* multicast leaves the machine whatever its ttl: this project talks over
+     * loopback only (memq://, tcpq://127.0.0.1:PORT, file://) */
+    if (strncmp(url, "udpm://", 7) == 0 || strchr(url, ':') == NULL) {
+        fprintf(stderr, "duel_evolve: node: '%s': UDP multicast is not used here; give memq://, file:// or "
+                        "tcpq://127.0.0.1:PORT\n", url);
+        return NULL;
+    }
     lcm = duel_node_lcm_create(url);
     if (lcm == NULL)
         fprintf(stderr, "duel_evolve: node: cannot start LCM on '%s' (a bad URL, or no hub listening there)\n", url);
