@@ -82,9 +82,12 @@ static const char *duel_rc_outcome(int outcome)
  * after one line on stderr. */
 static int duel_rc_read_log(duel_replay *rep, const char *path)
 {
-    (void)rep;
-    fprintf(stderr, "duel_evolve: render: %s: LCM log input needs the LCM reader (not built)\n", path);
-    return -1;
+    char err[512];
+    if (duel_replay_from_lcm_log(rep, path, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: render: %s\n", err);
+        return -1;
+    }
+    return 0;
 }
 
 /* The game between the controllers specs a and b, a starting west or east. */
@@ -262,20 +265,7 @@ int duel_cmd_render(int argc, char **argv)
             return 2;
         }
     }
-    if (strlen(dir) + 32 > sizeof path) {
-        fprintf(stderr, "duel_evolve: render: %s: name too long\n", dir);
-        return 2;
-    }
-    if (duel_mkdir(dir) != 0) {
-        fprintf(stderr, "duel_evolve: render: %s: cannot create the directory: %s\n", dir, strerror(errno));
-        return 2;
-    }
-    snprintf(suffix, sizeof suffix, "/.probe.%ld.tmp", (long)getpid());
-    if (duel_rc_probe(dir, suffix) != 0) {
-        fprintf(stderr, "duel_evolve: render: %s: cannot write in the directory: %s\n", dir, strerror(errno));
-        return 2;
-    }
-
+    /* the game, then the directory: bad input leaves nothing behind */
     duel_replay_init(&rep);
     if (n_pos == 1 ? duel_rc_read_log(&rep, pos[0]) : duel_rc_play(&rep, pos[0], pos[1], food, a_west)) {
         duel_replay_free(&rep);
@@ -283,6 +273,22 @@ int duel_cmd_render(int argc, char **argv)
     }
     if (rep.n == 0) {
         fprintf(stderr, "duel_evolve: render: %s: no frame to draw\n", pos[0]);
+        duel_replay_free(&rep);
+        return 2;
+    }
+    if (strlen(dir) + 32 > sizeof path) {
+        fprintf(stderr, "duel_evolve: render: %s: name too long\n", dir);
+        duel_replay_free(&rep);
+        return 2;
+    }
+    if (duel_mkdir(dir) != 0) {
+        fprintf(stderr, "duel_evolve: render: %s: cannot create the directory: %s\n", dir, strerror(errno));
+        duel_replay_free(&rep);
+        return 2;
+    }
+    snprintf(suffix, sizeof suffix, "/.probe.%ld.tmp", (long)getpid());
+    if (duel_rc_probe(dir, suffix) != 0) {
+        fprintf(stderr, "duel_evolve: render: %s: cannot write in the directory: %s\n", dir, strerror(errno));
         duel_replay_free(&rep);
         return 2;
     }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# render_cli.sh - duel_evolve render and render-net from the outside: frame files, same bytes twice, the MP4 through ffmpeg, the network picture through dot, bad input (exit 2, one line, nothing left behind).
+# render_cli.sh - duel_evolve render and render-net from the outside: frame files, same bytes twice, LCM logs drawn as the game, the MP4 through ffmpeg, the network picture through dot, bad input (exit 2, one line, nothing left behind).
 set -euo pipefail
 duel=$1
 bench=$2
@@ -81,6 +81,25 @@ video)
     [ "$got" -eq $(( (steps + 199) / 200 + 1 )) ] || fail "short video: $got frames"
   fi
   ;;
+lcm)
+  # a game recorded as an LCM log draws the same frames, byte for byte, as the game played here
+  "$duel" play "${game[@]}" --lcm-log "$tmp/game.lcm" > /dev/null
+  "$duel" render "$tmp/game.lcm" --out "$tmp/log" --size 128 --every 30 > "$tmp/out.txt"
+  "$duel" render "${game[@]}" --out "$tmp/live" --size 128 --every 30 > /dev/null
+  grep -q "west wins (collision, more energy) after $steps steps" "$tmp/out.txt" || fail "log outcome: $(cat "$tmp/out.txt")"
+  n=0
+  for f in "$tmp"/live/*.png; do
+    cmp "$f" "$tmp/log/$(basename "$f")" || fail "$(basename "$f"): the log's frame differs from the game's"
+    n=$((n + 1))
+  done
+  [ "$n" -eq $(( (steps + 29) / 30 + 1 )) ] && [ "$(find "$tmp/log" -type f | wc -l)" -eq "$n" ] || fail "$n frames"
+  # a truncated log and a file that is not a log: exit 2, one line, no directory made
+  head -c 3000 "$tmp/game.lcm" > "$tmp/cut.lcm"
+  expect_bad "cut.lcm: .*truncated" render "$tmp/cut.lcm" --out "$tmp/cut"
+  printf 'this is not an LCM event log\n' > "$tmp/notlcm.lcm"
+  expect_bad "notlcm.lcm: .*not an LCM event log" render "$tmp/notlcm.lcm" --out "$tmp/cut"
+  [ ! -e "$tmp/cut" ] || fail "a bad log left $tmp/cut"
+  ;;
 render-net)
   command -v dot > /dev/null || { echo "graphviz not installed: skipped"; exit 77; }
   "$bench" --write-blobs "$tmp" > /dev/null
@@ -96,8 +115,10 @@ render-net)
   ;;
 bad-input)
   printf 'this is not an LCM event log\n' > "$tmp/notlcm.lcm"
-  expect_bad "notlcm.lcm" render "$tmp/notlcm.lcm" --out "$tmp/x1"
+  expect_bad "notlcm.lcm: .*not an LCM event log" render "$tmp/notlcm.lcm" --out "$tmp/x1"
   expect_bad "missing.lcm" render "$tmp/missing.lcm" --out "$tmp/x1"
+  expect_bad "unknown builtin" render builtin:nope builtin:idle --out "$tmp/x1"
+  [ ! -e "$tmp/x1" ] || fail "bad input left the --out directory"
   # --out under a regular file: cannot be created (root can write anywhere, so no chmod trick)
   : > "$tmp/file"
   expect_bad "file/frames: cannot create the directory" render "${game[@]}" --out "$tmp/file/frames"
