@@ -324,8 +324,12 @@ int duel_cmd_render(int argc, char **argv)
         else
             printf("food configuration %d, west %s, east %s: ", rep.food_config, rep.west, rep.east);
         printf("%s after %u steps\n", duel_rc_outcome(last->ev.outcome), (unsigned)last->t);
-        printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every %d steps, and the final state)\n",
-               n_out, size, size, dir, n_out - 1, every);
+        if (every == 1)
+            printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every step and the final state)\n",
+                   n_out, size, size, dir, n_out - 1);
+        else
+            printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every %d steps and the final state)\n",
+                   n_out, size, size, dir, n_out - 1, every);
         printf("%u frames in %.2f s (%.1f frames/s, drawing and PNG writing)\n", n_out, secs,
                secs > 0 ? n_out / secs : 0.0);
         if (video != NULL) {
