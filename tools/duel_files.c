@@ -135,10 +135,27 @@ int duel_csv_keep_before(const char *path, uint32_t generation)
 
 int duel_mkdir(const char *path)
 {
+    char buf[4200], *p;
     struct stat st;
-    if (mkdir(path, 0755) == 0)
+    if (strlen(path) >= sizeof buf) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(buf, path);
+    /* the parents first, like mkdir -p */
+    for (p = buf + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0755) != 0 && errno != EEXIST)
+            return -1;
+        *p = '/';
+    }
+    if (mkdir(buf, 0755) == 0)
         return 0;
-    if (errno == EEXIST && stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+    if (errno == EEXIST && stat(buf, &st) == 0 && S_ISDIR(st.st_mode))
         return 0;
+    if (errno == EEXIST)
+        errno = ENOTDIR;
     return -1;
 }

@@ -20,7 +20,7 @@ int duel_file_append(const char *path, const char *text);
  * A missing file is fine. 0 or -1. */
 int duel_csv_keep_before(const char *path, uint32_t generation);
 
-/* mkdir that accepts an existing directory. 0 or -1. */
+/* mkdir -p: the parents too, and an existing directory is fine. 0 or -1. */
 int duel_mkdir(const char *path);
 
 #endif /* DUEL_FILES_H */

@@ -95,6 +95,9 @@ config)
   printf '[neat]\nn_inputs = 5\n' > "$tmp/io.ini"
   expect_bad "n_inputs must be 12" run --config "$tmp/io.ini" --out "$tmp/never"
   [ ! -e "$tmp/never" ] || { echo "a bad configuration created the run directory"; exit 1; }
+  # --out may name a directory whose parents do not exist yet (runs/quick on a fresh checkout)
+  "$duel" run --config "$cfg" --out "$tmp/deep/er/run" --quiet --generations 1
+  [ -f "$tmp/deep/er/run/checkpoint.bin" ] || { echo "no run in a new nested directory"; exit 1; }
   "$duel" run --config "$cfg" --out "$tmp/once" --quiet --generations 1
   expect_bad "already holds a run" run --config "$cfg" --out "$tmp/once"
   expect_bad "which run directory" resume
