@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "duel_cli.h"
+#include "duel_files.h"
 
 #define DUEL_EXPORT_NAME_MAX 63 /* longest array name; NAME_len adds 4 */
 #define DUEL_EXPORT_PER_LINE 12 /* bytes per line of the initialiser */
@@ -111,42 +112,10 @@ static void duel_export_write(FILE *f, const duel_export *x)
     fprintf(f, "\n};\nconst size_t %s_len = %lu;\n", x->name, (unsigned long)x->len);
 }
 
-/* Writes through a temporary file in the same directory, renamed over path
- * only once complete (a build never sees half an array). Returns 0, 2 (cannot
- * create) or 1. */
-static int duel_export_to_file(const duel_export *x, const char *path)
+/* duel_file_write_with's callback */
+static void duel_export_write_cb(FILE *f, const void *ctx)
 {
-    size_t len = strlen(path) + 32;
-    char *tmp = (char *)malloc(len);
-    FILE *f = NULL;
-    int fd, ok;
-
-    if (tmp == NULL) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
-        return 1;
-    }
-    snprintf(tmp, len, "%s.%ld.tmp", path, (long)getpid());
-    fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-    if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
-        if (fd >= 0) {
-            close(fd);
-            remove(tmp);
-        }
-        free(tmp);
-        return 2;
-    }
-    duel_export_write(f, x);
-    ok = !ferror(f);
-    ok = fclose(f) == 0 && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: write failed: %s\n", path, strerror(errno));
-        remove(tmp);
-        free(tmp);
-        return 1;
-    }
-    free(tmp);
-    return 0;
+    duel_export_write(f, (const duel_export *)ctx);
 }
 
 int duel_cmd_export(int argc, char **argv)
@@ -185,7 +154,7 @@ int duel_cmd_export(int argc, char **argv)
     if (duel_export_open(&x, blob) != 0)
         return 2;
     if (out != NULL) {
-        rc = duel_export_to_file(&x, out);
+        rc = duel_file_write_with(out, duel_export_write_cb, &x);
     } else {
         duel_export_write(stdout, &x);
         if (fflush(stdout) != 0 || ferror(stdout)) {

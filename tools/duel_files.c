@@ -159,3 +159,38 @@ int duel_mkdir(const char *path)
         errno = ENOTDIR;
     return -1;
 }
+
+int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
+{
+    size_t len = strlen(path) + 32;
+    char *tmp = (char *)malloc(len);
+    FILE *f = NULL;
+    int fd, ok;
+
+    if (tmp == NULL) {
+        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
+        return 1;
+    }
+    snprintf(tmp, len, "%s.%ld.tmp", path, (long)getpid());
+    fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+            remove(tmp);
+        }
+        free(tmp);
+        return 2;
+    }
+    write(f, ctx);
+    ok = !ferror(f);
+    ok = fclose(f) == 0 && ok;
+    if (!ok || rename(tmp, path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: write failed: %s\n", path, strerror(errno));
+        remove(tmp);
+        free(tmp);
+        return 1;
+    }
+    free(tmp);
+    return 0;
+}

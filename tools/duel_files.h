@@ -4,6 +4,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 /* Writes data to path through path.tmp, fsync and rename: a reader sees the
  * old file or the new one, never a mix. 0 or -1 (errno set). */
@@ -19,6 +20,12 @@ int duel_file_append(const char *path, const char *text);
  * number) is below generation; drops the rest, including a torn last row.
  * A missing file is fine. 0 or -1. */
 int duel_csv_keep_before(const char *path, uint32_t generation);
+
+/* Writes a text file through write(f, ctx) into a temporary file in the
+ * same directory, renamed over path only once complete. Returns 0, 2 (cannot
+ * create: a bad path) or 1 (the write failed), with one line on stderr. */
+typedef void (*duel_write_fn)(FILE *f, const void *ctx);
+int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx);
 
 /* mkdir -p: the parents too, and an existing directory is fine. 0 or -1. */
 int duel_mkdir(const char *path);

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "duel_cli.h"
+#include "duel_files.h"
 
 /* Names of the duel's inputs (docs/duelsim.md, sensors in the spec's order;
  * rangefinder sector k is centred on heading + k * 72 degrees counter-clockwise)
@@ -366,41 +367,10 @@ int duel_dot_blob(FILE *f, const char *path)
     return 0;
 }
 
-/* Writes the graph to path through a temporary file in the same directory,
- * renamed over path only once complete. Returns 0, 2 (cannot create) or 1. */
-static int duel_dot_to_file(const duel_insp *x, const char *path)
+/* duel_file_write_with's callback */
+static void duel_dot_write_cb(FILE *f, const void *ctx)
 {
-    size_t len = strlen(path) + 32;
-    char *tmp = (char *)malloc(len);
-    FILE *f = NULL;
-    int fd, ok;
-
-    if (tmp == NULL) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
-        return 1;
-    }
-    snprintf(tmp, len, "%s.%ld.tmp", path, (long)getpid());
-    fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-    if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
-        if (fd >= 0) {
-            close(fd);
-            remove(tmp);
-        }
-        free(tmp);
-        return 2;
-    }
-    duel_dot_write(f, x);
-    ok = !ferror(f);
-    ok = fclose(f) == 0 && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: write failed: %s\n", path, strerror(errno));
-        remove(tmp);
-        free(tmp);
-        return 1;
-    }
-    free(tmp);
-    return 0;
+    duel_dot_write(f, (const duel_insp *)ctx);
 }
 
 int duel_cmd_dot(int argc, char **argv)
@@ -430,7 +400,7 @@ int duel_cmd_dot(int argc, char **argv)
     if (duel_insp_open(&x, blob) != 0)
         return 2;
     if (out != NULL) {
-        rc = duel_dot_to_file(&x, out);
+        rc = duel_file_write_with(out, duel_dot_write_cb, &x);
     } else {
         duel_dot_write(stdout, &x);
         if (fflush(stdout) != 0 || ferror(stdout)) {
