@@ -1,10 +1,8 @@
 /* duel_export.c - `duel_evolve export BLOB --c-array NAME [-o FILE]`: a champion blob, validated by the runtime, as a C array a firmware links. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
-#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "duel_cli.h"
 #include "duel_files.h"

@@ -1,10 +1,8 @@
 /* duel_inspect.c - `duel_evolve inspect BLOB` and `duel_evolve dot BLOB`: a champion blob's nodes and connections as text or Graphviz. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
-#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "duel_cli.h"
 #include "duel_files.h"
