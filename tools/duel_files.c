@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -193,4 +194,21 @@ int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
     }
     free(tmp);
     return 0;
+}
+
+int duel_dir_lock(const char *dir)
+{
+    char path[4200];
+    int fd;
+    snprintf(path, sizeof path, "%s/.lock", dir);
+    fd = open(path, O_RDWR | O_CREAT, 0644);
+    if (fd < 0)
+        return -1;
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        int e = errno;
+        close(fd);
+        errno = e;
+        return -1;
+    }
+    return fd; /* held until the process ends, however it ends */
 }

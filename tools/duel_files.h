@@ -27,6 +27,11 @@ int duel_csv_keep_before(const char *path, uint32_t generation);
 typedef void (*duel_write_fn)(FILE *f, const void *ctx);
 int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx);
 
+/* Takes DIR/.lock exclusively for the rest of the process (the kernel drops
+ * it when the process ends, even by kill -9). The descriptor, or -1 with
+ * errno EWOULDBLOCK when another process holds it. */
+int duel_dir_lock(const char *dir);
+
 /* mkdir -p: the parents too, and an existing directory is fine. 0 or -1. */
 int duel_mkdir(const char *path);
 

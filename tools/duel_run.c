@@ -358,6 +358,18 @@ static int duel_parse_u32(const char *opt, const char *v, uint32_t lo, uint32_t 
     return 0;
 }
 
+/* One process per run directory: a second run or resume there is refused. */
+static int duel_lock(const char *dir)
+{
+    if (duel_dir_lock(dir) >= 0)
+        return 0;
+    if (errno == EWOULDBLOCK)
+        fprintf(stderr, "duel_evolve: %s is in use by another duel_evolve run or resume\n", dir);
+    else
+        fprintf(stderr, "duel_evolve: %s/.lock: cannot open: %s\n", dir, strerror(errno));
+    return -1;
+}
+
 static int duel_start(duel_run *R)
 {
     int err = duel_games_create(&R->games, R->threads, &R->cfg.neat);
@@ -440,6 +452,14 @@ int duel_cmd_run(int argc, char **argv)
         fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R.dir, strerror(errno));
         return 2;
     }
+    if (duel_lock(R.dir) != 0)
+        return 2;
+    duel_path(path, sizeof path, R.dir, "checkpoint.bin");
+    if (stat(path, &st) == 0) { /* another run got there first */
+        fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
+                        "another --out\n", R.dir, R.dir);
+        return 2;
+    }
     duel_path(path, sizeof path, R.dir, "games");
     if (R.record_games && duel_mkdir(path) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
@@ -520,6 +540,8 @@ int duel_cmd_resume(int argc, char **argv)
         return 2;
     }
     before = R.cfg;
+    if (duel_lock(R.dir) != 0)
+        return 2;
     for (k = 0; k < n_sets; k++)
         if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
             fprintf(stderr, "duel_evolve: --set %s: %s\n", sets[k], err);

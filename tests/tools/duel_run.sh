@@ -55,7 +55,10 @@ interrupt)
   "$duel" run --config "$cfg" --out "$tmp/ref" --threads 2 --quiet
   rc=0
   "$duel" run --config "$cfg" --out "$tmp/i" --threads 2 --quiet 2> "$tmp/err" & pid=$!
-  sleep 0.5; kill -INT "$pid"; wait "$pid" || rc=$?
+  sleep 0.3
+  # one process per run directory
+  expect_bad "is in use by another duel_evolve" resume "$tmp/i"
+  sleep 0.2; kill -INT "$pid"; wait "$pid" || rc=$?
   if [ "$rc" -eq 0 ]; then echo "the run finished before Ctrl-C: nothing tested"; exit 1; fi
   [ "$rc" -eq 130 ] || { echo "Ctrl-C: exit $rc, expected 130"; cat "$tmp/err"; exit 1; }
   grep -q "duel_evolve resume $tmp/i" "$tmp/err" || { echo "no resume hint: $(cat "$tmp/err")"; exit 1; }
