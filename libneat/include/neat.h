@@ -206,8 +206,12 @@ const neat_genome *neat_pop_genome(const neat_pop *pop, uint32_t i);
 /* Thread-safe for distinct i. Rejects NaN, infinity and negatives (NEAT_E_FITNESS). */
 int neat_pop_set_fitness(neat_pop *pop, uint32_t i, double fitness);
 /* Fitness set for every genome: the next generation. On any error the
- * population is unchanged (NEAT_E_FITNESS: neat_pop_error_index names the
- * first bad genome; NEAT_E_NOMEM: a retry gives the same generation). */
+ * population stays in this generation (NEAT_E_FITNESS: neat_pop_error_index
+ * names the first bad genome; NEAT_E_NOMEM: a retry gives the same
+ * generation). After NEAT_E_NOMEM its genomes, fitness, counters and PRNG
+ * are untouched, but the species' member order and representatives may
+ * already be those the retry recomputes anyway, so a checkpoint saved then
+ * can differ in those bytes while continuing to the same run. */
 int neat_pop_epoch(neat_pop *pop);
 uint32_t neat_pop_error_index(const neat_pop *pop);
 
