@@ -7,9 +7,9 @@
 static void duel_usage(FILE *f)
 {
     fprintf(f, "usage: duel_evolve run --config FILE --out DIR [--seed S] [--generations N] [--threads T] [--quiet] "
-               "[--json]\n"
+               "[--json] [--record-champion-games]\n"
                "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
-               "[--json]\n"
+               "[--json] [--record-champion-games]\n"
                "       duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
                "       duel_evolve ladder DIR\n"
                "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
