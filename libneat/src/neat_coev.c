@@ -390,8 +390,8 @@ typedef struct neat_gen_out {
     neat_genome hof[2], champion, dom;
     neat_genome champs[2][NEAT_COEV_MAX_CHAMPS];
     uint32_t n_champs[2];
-    uint16_t *wins, *losses;
-    uint32_t n_beaten;
+    uint16_t *wins, *losses; /* [cap_beaten]: one place per earlier dominant */
+    uint32_t n_beaten, cap_beaten;
     int new_dom;
 } neat_gen_out;
 
@@ -405,8 +405,8 @@ static void neat_gen_out_free(neat_gen_out *o, const neat_alloc *a)
     }
     neat_genome_free(&o->champion, a);
     neat_genome_free(&o->dom, a);
-    neat_mem_free(a, o->wins, (size_t)o->n_beaten * sizeof *o->wins);
-    neat_mem_free(a, o->losses, (size_t)o->n_beaten * sizeof *o->losses);
+    neat_mem_free(a, o->wins, (size_t)o->cap_beaten * sizeof *o->wins);
+    neat_mem_free(a, o->losses, (size_t)o->cap_beaten * sizeof *o->losses);
 }
 
 int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *rep)
@@ -415,7 +415,6 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
     uint32_t n_opp[2], size, p, h, j, s, k, n = 0, best[2], champ_pop, cw[2];
     uint32_t *wins[2] = {NULL, NULL}, *idx = NULL, *tmp = NULL;
     neat_pop *next[2] = {NULL, NULL};
-    uint32_t beaten_w[1024], beaten_l[1024];
     neat_gen_out o;
     neat_coev_report r;
     const neat_genome *champ;
@@ -424,7 +423,7 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
     if (c == NULL || play == NULL)
         return NEAT_E_ARG;
     if (c->cp.first_opponents > 2048 || c->cp.species_opponents + c->cp.hof_opponents > 2048 ||
-        c->cp.species_opponents > NEAT_COEV_MAX_CHAMPS || c->n_dom >= 1024)
+        c->cp.species_opponents > NEAT_COEV_MAX_CHAMPS)
         return NEAT_E_PARAM;
     memset(&r, 0, sizeof r);
     memset(&o, 0, sizeof o);
@@ -497,6 +496,20 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
 
     /* 3. dominance: superior to every dominant, the latest first */
     o.new_dom = 1;
+    if (c->n_dom > 0) {
+        o.wins = (uint16_t *)neat_mem_realloc(&c->a, NULL, 0, c->n_dom * sizeof(uint16_t));
+        o.losses = (uint16_t *)neat_mem_realloc(&c->a, NULL, 0, c->n_dom * sizeof(uint16_t));
+        if (o.wins != NULL && o.losses != NULL) {
+            o.cap_beaten = c->n_dom;
+        } else {
+            /* free what came: nothing is sized by cap_beaten yet */
+            neat_mem_free(&c->a, o.wins, c->n_dom * sizeof(uint16_t));
+            neat_mem_free(&c->a, o.losses, c->n_dom * sizeof(uint16_t));
+            o.wins = o.losses = NULL;
+            err = NEAT_E_NOMEM;
+            goto done;
+        }
+    }
     for (k = c->n_dom; k-- > 0;) {
         uint32_t wc, wd;
         err = neat_compare(c, champ, &c->dom[k].g, 1u + (c->n_dom - 1u - k), play, ud, &wc, &wd);
@@ -507,8 +520,9 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
             o.new_dom = 0;
             break;
         }
-        beaten_w[o.n_beaten] = wc;
-        beaten_l[o.n_beaten] = wd;
+        /* within 2 x 30000 games: 16 bits hold them */
+        o.wins[o.n_beaten] = (uint16_t)wc;
+        o.losses[o.n_beaten] = (uint16_t)wd;
         o.n_beaten++;
     }
     r.games += r.dominance_games;
@@ -533,16 +547,6 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
         err = neat_copy_scored(&o.dom, c->pop[champ_pop], best[champ_pop], wins[champ_pop], &c->a);
         if (!err)
             err = neat_mem_reserve(&c->a, (void **)&c->dom, &c->cap_dom, c->n_dom + 1u, sizeof(neat_dom));
-        if (!err && o.n_beaten > 0) {
-            o.wins = (uint16_t *)neat_mem_realloc(&c->a, NULL, 0, o.n_beaten * sizeof(uint16_t));
-            o.losses = (uint16_t *)neat_mem_realloc(&c->a, NULL, 0, o.n_beaten * sizeof(uint16_t));
-            if (o.wins == NULL || o.losses == NULL)
-                err = NEAT_E_NOMEM;
-            for (k = 0; k < o.n_beaten && !err; k++) {
-                o.wins[k] = (uint16_t)beaten_w[k];
-                o.losses[k] = (uint16_t)beaten_l[k];
-            }
-        }
     }
     if (err)
         goto done;
@@ -591,12 +595,12 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
         d->generation = c->generation;
         d->pop = champ_pop;
         d->g = o.dom;
-        d->n = o.n_beaten;
+        d->n = o.n_beaten; /* = cap_beaten: it beat every earlier dominant */
         d->wins = o.wins;
         d->losses = o.losses;
         neat_genome_init(&o.dom);
         o.wins = o.losses = NULL;
-        o.n_beaten = 0;
+        o.n_beaten = o.cap_beaten = 0;
     }
     r.dominants = c->n_dom;
     r.new_dominant = o.new_dom;
@@ -799,7 +803,7 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
     if (!r.err) {
         size_t at = r.off;
         uint32_t nd = neat_get_count(&r, 25);
-        if (!r.err && (nd > c->generation || nd >= 1024 || (c->generation > 0 && nd == 0))) {
+        if (!r.err && (nd > c->generation || (c->generation > 0 && nd == 0))) {
             r.off = at;
             neat_fail(&r, NEAT_E_FORMAT);
         }
