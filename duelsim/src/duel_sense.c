@@ -32,9 +32,10 @@ static inline nrt_q15 duel_range_reading(int64_t d2)
     return (nrt_q15)(v > 32767 ? 32767 : v);
 }
 
-/* The sector of the non-zero vector (vx, vy) from the robot: the same
- * decision tree as duel_scan's, for the one robot rangefinder object. */
-static int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const int64_t by[5])
+/* The sector of the vector (vx, vy) from the robot: boundary 2 (straight
+ * behind) splits the left sectors 0-2 from the right ones 3, 4, 0, then one
+ * or two more cross products. A zero vector comes out as sector 0. */
+static inline int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const int64_t by[5])
 {
     if (bx[2] * vy < by[2] * vx)
         return bx[0] * vy < by[0] * vx ? 0 : (bx[1] * vy < by[1] * vx ? 1 : 2);
@@ -49,8 +50,7 @@ static int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const int64_
  * (inclusive: a bearing on a boundary belongs to the sector counter-clockwise
  * of it) to boundary k (exclusive); v is clockwise of boundary k when
  * cross(b_k, v) < 0. Two or three 64-bit cross products per object (Q16.16 x
- * Q30 < 2^57), no trigonometry: boundary 2 (straight behind) splits the left
- * sectors 0-2 from the right ones 3, 4, 0. The boundaries come widened to
+ * Q30 < 2^57), no trigonometry (duel_sector). The boundaries come widened to
  * 64 bits and the robot's position is read once: this loop is the
  * simulator's hot spot. */
 static void duel_scan(int32_t rx, int32_t ry, const int32_t *ox, const int32_t *oy, uint32_t mask,
@@ -68,10 +68,7 @@ static void duel_scan(int32_t rx, int32_t ry, const int32_t *ox, const int32_t *
         vx = (int64_t)ox[i] - rx;
         vy = (int64_t)oy[i] - ry;
         d2m1 = (uint64_t)(vx * vx + vy * vy) - 1u;
-        if (bx[2] * vy < by[2] * vx)       /* bearing in (0, 180) degrees */
-            k = bx[0] * vy < by[0] * vx ? 0 : (bx[1] * vy < by[1] * vx ? 1 : 2);
-        else                               /* [180, 360] */
-            k = bx[3] * vy < by[3] * vx ? 3 : (bx[4] * vy < by[4] * vx ? 4 : 0);
+        k = duel_sector(vx, vy, bx, by);
         if (d2m1 < near[k])
             near[k] = d2m1;
     }
