@@ -151,11 +151,5 @@ const char *duel_lcm_outcome_text(int outcome, int forfeit)
     case DUEL_STATE_T_FORFEIT_BOTH: return "draw (neither controller answered in time)";
     default: break;
     }
-    switch (outcome) {
-    case DUEL_WEST_WINS: return "west wins (collision, more energy)";
-    case DUEL_EAST_WINS: return "east wins (collision, more energy)";
-    case DUEL_DRAW: return "draw (collision at equal energy)";
-    case DUEL_TIMEOUT: return "timeout (no collision in 750 steps)";
-    default: return "unfinished";
-    }
+    return duel_outcome_text(outcome);
 }

@@ -13,17 +13,6 @@ static void duel_play_usage(void)
                     "  A, B: a champion blob file or builtin:NAME (idle, spinner, forager, hunter, forager-hunter)\n");
 }
 
-static const char *duel_outcome_text(int outcome)
-{
-    switch (outcome) {
-    case DUEL_WEST_WINS: return "west wins (collision, more energy)";
-    case DUEL_EAST_WINS: return "east wins (collision, more energy)";
-    case DUEL_DRAW: return "draw (collision at equal energy)";
-    case DUEL_TIMEOUT: return "timeout (no collision in 750 steps)";
-    default: return "unfinished";
-    }
-}
-
 int duel_cmd_play(int argc, char **argv)
 {
     duel_cli_ctrl a, b;

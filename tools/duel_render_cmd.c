@@ -67,17 +67,6 @@ static double duel_rc_now(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-static const char *duel_rc_outcome(int outcome)
-{
-    switch (outcome) {
-    case DUEL_WEST_WINS: return "west wins (collision, more energy)";
-    case DUEL_EAST_WINS: return "east wins (collision, more energy)";
-    case DUEL_DRAW: return "draw (collision at equal energy)";
-    case DUEL_TIMEOUT: return "timeout";
-    default: return "unfinished";
-    }
-}
-
 /* The game's frames from an LCM event log (`play --lcm-log`). 0, or -1
  * after one line on stderr. */
 static int duel_rc_read_log(duel_replay *rep, const char *path)
@@ -323,7 +312,7 @@ int duel_cmd_render(int argc, char **argv)
             printf("training food, west %s, east %s: ", rep.west, rep.east);
         else
             printf("food configuration %d, west %s, east %s: ", rep.food_config, rep.west, rep.east);
-        printf("%s after %u steps\n", duel_rc_outcome(last->ev.outcome), (unsigned)last->t);
+        printf("%s after %u steps\n", duel_outcome_text(last->ev.outcome), (unsigned)last->t);
         if (every == 1)
             printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every step and the final state)\n",
                    n_out, size, size, dir, n_out - 1);

@@ -134,4 +134,7 @@ typedef struct duel_tally {
 } duel_tally;
 int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally);
 
+/* How a game ended, for people: "west wins (collision, more energy)", ... */
+const char *duel_outcome_text(int outcome);
+
 #endif /* DUEL_H */

@@ -106,3 +106,14 @@ int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
         }
     return DUEL_OK;
 }
+
+const char *duel_outcome_text(int outcome)
+{
+    switch (outcome) {
+    case DUEL_WEST_WINS: return "west wins (collision, more energy)";
+    case DUEL_EAST_WINS: return "east wins (collision, more energy)";
+    case DUEL_DRAW: return "draw (collision at equal energy)";
+    case DUEL_TIMEOUT: return "timeout (no collision in 750 steps)";
+    default: return "unfinished";
+    }
+}
