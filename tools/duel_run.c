@@ -370,6 +370,33 @@ static int duel_lock(const char *dir)
     return -1;
 }
 
+/* The options run and resume share: --generations, --threads, --quiet,
+ * --json, --record-champion-games. 1 when argv[*i] was one (and *i is past
+ * its value), 0 when it is not, -1 after a message on a bad value. */
+static int duel_common_option(duel_run *R, int argc, char **argv, int *i, uint32_t *gens, int *have_gens)
+{
+    const char *a = argv[*i], *v = *i + 1 < argc ? argv[*i + 1] : NULL;
+    if (strcmp(a, "--generations") == 0) {
+        if (duel_parse_u32(a, v, 1, 1000000, gens))
+            return -1;
+        *have_gens = 1;
+        ++*i;
+    } else if (strcmp(a, "--threads") == 0) {
+        if (duel_parse_u32(a, v, 0, 256, &R->threads))
+            return -1;
+        ++*i;
+    } else if (strcmp(a, "--quiet") == 0) {
+        R->quiet = 1;
+    } else if (strcmp(a, "--json") == 0) {
+        R->json = 1;
+    } else if (strcmp(a, "--record-champion-games") == 0) {
+        R->record_games = 1;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
 static int duel_start(duel_run *R)
 {
     int err = duel_games_create(&R->games, R->threads, &R->cfg.neat);
@@ -389,7 +416,7 @@ int duel_cmd_run(int argc, char **argv)
     const char *config = NULL;
     char err[600], path[4200];
     uint32_t seed = 0, gens = 0;
-    int i, have_seed = 0, have_gens = 0, e;
+    int i, c, have_seed = 0, have_gens = 0, e;
     struct stat st;
 
     memset(&R, 0, sizeof R);
@@ -407,21 +434,9 @@ int duel_cmd_run(int argc, char **argv)
                 return 2;
             have_seed = 1;
             i++;
-        } else if (strcmp(a, "--generations") == 0) {
-            if (duel_parse_u32(a, v, 1, 1000000, &gens))
+        } else if ((c = duel_common_option(&R, argc, argv, &i, &gens, &have_gens)) != 0) {
+            if (c < 0)
                 return 2;
-            have_gens = 1;
-            i++;
-        } else if (strcmp(a, "--threads") == 0) {
-            if (duel_parse_u32(a, v, 0, 256, &R.threads))
-                return 2;
-            i++;
-        } else if (strcmp(a, "--quiet") == 0) {
-            R.quiet = 1;
-        } else if (strcmp(a, "--json") == 0) {
-            R.json = 1;
-        } else if (strcmp(a, "--record-champion-games") == 0) {
-            R.record_games = 1;
         } else {
             fprintf(stderr, "duel_evolve run: unknown option '%s' (usage: duel_evolve run --config FILE --out DIR "
                             "[--seed S] [--generations N] [--threads T] [--quiet] [--json] "
@@ -441,12 +456,6 @@ int duel_cmd_run(int argc, char **argv)
         R.cfg.seed = seed;
     if (have_gens)
         R.cfg.generations = gens;
-    duel_path(path, sizeof path, R.dir, "checkpoint.bin");
-    if (stat(path, &st) == 0) {
-        fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
-                        "another --out\n", R.dir, R.dir);
-        return 2;
-    }
     duel_path(path, sizeof path, R.dir, "champions");
     if (duel_mkdir(R.dir) != 0 || duel_mkdir(path) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R.dir, strerror(errno));
@@ -455,7 +464,7 @@ int duel_cmd_run(int argc, char **argv)
     if (duel_lock(R.dir) != 0)
         return 2;
     duel_path(path, sizeof path, R.dir, "checkpoint.bin");
-    if (stat(path, &st) == 0) { /* another run got there first */
+    if (stat(path, &st) == 0) { /* checked under the lock: two runs cannot both pass */
         fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
                         "another --out\n", R.dir, R.dir);
         return 2;
@@ -490,7 +499,7 @@ int duel_cmd_resume(int argc, char **argv)
     duel_run R;
     char err[600], path[4200], *sets[64];
     uint32_t gens = 0, n_sets = 0, k, g;
-    int i, have_gens = 0, e;
+    int i, c, have_gens = 0, e;
     uint8_t *buf;
     size_t len, off = 0;
     duel_config before;
@@ -498,23 +507,11 @@ int duel_cmd_resume(int argc, char **argv)
     memset(&R, 0, sizeof R);
     for (i = 0; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(a, "--generations") == 0) {
-            if (duel_parse_u32(a, v, 1, 1000000, &gens))
+        if ((c = duel_common_option(&R, argc, argv, &i, &gens, &have_gens)) != 0) {
+            if (c < 0)
                 return 2;
-            have_gens = 1;
-            i++;
-        } else if (strcmp(a, "--threads") == 0) {
-            if (duel_parse_u32(a, v, 0, 256, &R.threads))
-                return 2;
-            i++;
         } else if (strcmp(a, "--set") == 0 && v && n_sets < 64) {
             sets[n_sets++] = argv[++i];
-        } else if (strcmp(a, "--quiet") == 0) {
-            R.quiet = 1;
-        } else if (strcmp(a, "--json") == 0) {
-            R.json = 1;
-        } else if (strcmp(a, "--record-champion-games") == 0) {
-            R.record_games = 1;
         } else if (a[0] != '-' && R.dir == NULL) {
             R.dir = a;
         } else {
