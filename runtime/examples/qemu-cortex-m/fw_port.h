@@ -11,6 +11,11 @@
 #define FW_EXIT_REFUSED 2 /* a linked champion was refused (bad blob, wrong shape, no memory) */
 #define FW_EXIT_FAULT 3   /* a processor fault or trap (targets only) */
 
+/* One semihosting call (operation, argument block; the result), by the
+ * port's own trap instruction: fw_semihosting.c builds console output and
+ * exit on it. */
+uint32_t fw_semihost(uint32_t op, const void *arg);
+
 /* n bytes to the host's console (semihosting on the targets). */
 void fw_port_write(const char *s, size_t n);
 

@@ -1,20 +1,13 @@
-/* fw_port_riscv.c - the RISC-V port: console and exit through RISC-V semihosting, minstret as the counter, the calibration loop. */
+/* fw_port_riscv.c - the RISC-V port: the semihosting trap, minstret as the counter, the calibration loop. */
 #include "fw_port.h"
 #include "fw_riscv.h"
-
-/* The Arm semihosting operations, as the RISC-V semihosting spec reuses them. */
-#define FW_SYS_WRITE0 0x04
-#define FW_SYS_EXIT 0x18
-#define FW_SYS_EXIT_EXTENDED 0x20
-#define FW_ADP_STOPPED_APPLICATION_EXIT 0x20026u
-#define FW_ADP_STOPPED_RUNTIME_ERROR_UNKNOWN 0x20023u
 
 const uint32_t fw_port_counter_mask = 0xFFFFFFFFu;
 
 /* A semihosting call: the uncompressed sequence slli x0,x0,0x1f; ebreak;
  * srai x0,x0,7 (within one page: 16-byte aligned), operation in a0,
  * argument in a1, result in a0. */
-static uint32_t fw_semihost(uint32_t op, const void *arg)
+uint32_t fw_semihost(uint32_t op, const void *arg)
 {
     register uint32_t a0 __asm__("a0") = op;
     register const void *a1 __asm__("a1") = arg;
@@ -29,33 +22,6 @@ static uint32_t fw_semihost(uint32_t op, const void *arg)
                      : "r"(a1)
                      : "memory");
     return a0;
-}
-
-void fw_port_write(const char *s, size_t n)
-{
-    /* SYS_WRITE0 takes a NUL-terminated string: chunks of a small buffer */
-    char buf[65];
-    size_t i = 0;
-    while (i < n) {
-        size_t k = 0;
-        while (k < sizeof buf - 1 && i < n)
-            buf[k++] = s[i++];
-        buf[k] = '\0';
-        fw_semihost(FW_SYS_WRITE0, buf);
-    }
-}
-
-void fw_port_exit(int status)
-{
-    uint32_t block[2];
-    block[0] = FW_ADP_STOPPED_APPLICATION_EXIT;
-    block[1] = (uint32_t)status;
-    fw_semihost(FW_SYS_EXIT_EXTENDED, block);
-    /* a host without SYS_EXIT_EXTENDED: plain SYS_EXIT, success or not */
-    fw_semihost(FW_SYS_EXIT, (const void *)(status == 0 ? FW_ADP_STOPPED_APPLICATION_EXIT
-                                                        : FW_ADP_STOPPED_RUNTIME_ERROR_UNKNOWN));
-    for (;;)
-        __asm__ volatile("wfi");
 }
 
 void fw_port_counter_start(void)
