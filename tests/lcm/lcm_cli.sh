@@ -13,18 +13,10 @@ cleanup() {
   rm -rf "$tmp"
 }
 trap cleanup EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+# shellcheck source=/dev/null
+. "$(dirname "$0")/../tools/cli_lib.sh"
 skip() { echo "SKIP: $*"; exit 77; }
 ms() { echo $(( $(date +%s%N) / 1000000 )); }
-
-expect_bad() { # expect_bad PATTERN ARGS...: exit status 2 and one line on stderr matching PATTERN
-  local pattern=$1 rc=0 msg
-  shift
-  msg=$("$duel" "$@" 2>&1 >/dev/null) || rc=$?
-  [ "$rc" -eq 2 ] || fail "$*: exit $rc, expected 2 ($msg)"
-  [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "$*: more than one line: $msg"
-  printf '%s\n' "$msg" | grep -q -- "$pattern" || fail "$*: got '$msg', expected '$pattern'"
-}
 
 # LCM's TCP hub (liblcm-java) on a free loopback port: sets $hub_port.
 start_hub() {

@@ -6,18 +6,9 @@ bench=$2
 what=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=/dev/null
+. "$(dirname "$0")/../tools/cli_lib.sh"
 unset DISPLAY WAYLAND_DISPLAY # off-screen: no display at all
-
-fail() { echo "$*"; exit 1; }
-
-expect_bad() { # expect_bad PATTERN ARGS...: exit status 2 and a one-line message matching PATTERN
-  local pattern=$1 rc=0 msg
-  shift
-  msg=$("$duel" "$@" 2>&1 >/dev/null) || rc=$?
-  [ "$rc" -eq 2 ] || fail "$*: exit $rc, expected 2 ($msg)"
-  [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "$*: more than one line: $msg"
-  printf '%s\n' "$msg" | grep -q -- "$pattern" || fail "$*: got '$msg'"
-}
 
 png_size() { # png_size FILE: "WIDTH HEIGHT" from the IHDR chunk, after checking the signature
   [ "$(od -An -tx1 -N8 "$1" | tr -d ' \n')" = 89504e470d0a1a0a ] || fail "$1: not a PNG"

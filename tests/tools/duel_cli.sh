@@ -5,26 +5,19 @@ duel=$1
 what=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-
-expect_bad() { # expect_bad PATTERN ARGS...: exit status 2 and a one-line message matching PATTERN
-  local pattern=$1 rc=0 msg
-  shift
-  msg=$("$duel" play "$@" 2>&1 >/dev/null) || rc=$?
-  [ "$rc" -eq 2 ] || { echo "play $*: exit $rc, expected 2"; exit 1; }
-  [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || { echo "play $*: more than one line: $msg"; exit 1; }
-  printf '%s\n' "$msg" | grep -q -- "$pattern" || { echo "play $*: got '$msg'"; exit 1; }
-}
+# shellcheck source=/dev/null
+. "$(dirname "$0")/cli_lib.sh"
 
 case "$what" in
 bad-input)
-  expect_bad "builtin:nope: unknown builtin" builtin:nope builtin:idle
-  expect_bad "missing.blob: cannot open" "$tmp/missing.blob" builtin:idle
+  expect_bad "builtin:nope: unknown builtin" play builtin:nope builtin:idle
+  expect_bad "missing.blob: cannot open" play "$tmp/missing.blob" builtin:idle
   printf 'NRTB this is not a blob at all, just text long enough' > "$tmp/bad.blob"
-  expect_bad "bad.blob: not a valid champion blob" "$tmp/bad.blob" builtin:idle
-  expect_bad "bad food configuration '144'" builtin:idle builtin:idle --food 144
-  expect_bad "bad food configuration 'x'" builtin:idle builtin:idle --food x
-  expect_bad "--side takes west or east" builtin:idle builtin:idle --side north
-  expect_bad "unknown option" builtin:idle builtin:idle --what 1
+  expect_bad "bad.blob: not a valid champion blob" play "$tmp/bad.blob" builtin:idle
+  expect_bad "bad food configuration '144'" play builtin:idle builtin:idle --food 144
+  expect_bad "bad food configuration 'x'" play builtin:idle builtin:idle --food x
+  expect_bad "--side takes west or east" play builtin:idle builtin:idle --side north
+  expect_bad "unknown option" play builtin:idle builtin:idle --what 1
   ;;
 trace)
   "$duel" play builtin:forager-hunter builtin:idle --trace "$tmp/t.csv" > "$tmp/out.txt"

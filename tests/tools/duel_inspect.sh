@@ -6,17 +6,8 @@ bench=$2
 what=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-
-fail() { echo "$*"; exit 1; }
-
-expect_bad() { # expect_bad PATTERN ARGS...: exit status 2 and a one-line message matching PATTERN
-  local pattern=$1 rc=0 msg
-  shift
-  msg=$("$duel" "$@" 2>&1 >/dev/null) || rc=$?
-  [ "$rc" -eq 2 ] || fail "$*: exit $rc, expected 2"
-  [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "$*: more than one line: $msg"
-  printf '%s\n' "$msg" | grep -q -- "$pattern" || fail "$*: got '$msg'"
-}
+# shellcheck source=/dev/null
+. "$(dirname "$0")/cli_lib.sh"
 
 field() { # field FILE KEY: the first word after "KEY: "
   sed -n "s/^$2: \([0-9a-zx]*\).*/\1/p" "$1"

@@ -6,6 +6,8 @@ what=$2
 cfg=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=/dev/null
+. "$(dirname "$0")/cli_lib.sh"
 
 # Everything of a run directory but timings and the log: champions, the
 # dominance table, the checkpoint, and generations.csv without its seconds column.
@@ -16,15 +18,6 @@ same_run() {
   diff <(cut -d, -f1-12 "$1/generations.csv") <(cut -d, -f1-12 "$2/generations.csv") ||
     { echo "generations.csv differs"; exit 1; }
   [ "$(ls "$1/champions" | wc -l)" -gt 0 ] || { echo "no champions"; exit 1; }
-}
-
-expect_bad() { # expect_bad PATTERN ARGS...: exit 2, one line matching PATTERN
-  local pattern=$1 rc=0 msg
-  shift
-  msg=$("$duel" "$@" 2>&1 >/dev/null) || rc=$?
-  [ "$rc" -eq 2 ] || { echo "$*: exit $rc, expected 2 ($msg)"; exit 1; }
-  [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || { echo "$*: more than one line: $msg"; exit 1; }
-  printf '%s\n' "$msg" | grep -q -- "$pattern" || { echo "$*: got '$msg', expected '$pattern'"; exit 1; }
 }
 
 case "$what" in
