@@ -17,6 +17,7 @@
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
 #include "neat_coev.h"
+#include "neat_phenotype.h"
 
 /* Set by SIGINT/SIGTERM: the generation in progress finishes and is saved. */
 static volatile sig_atomic_t duel_stop = 0;
@@ -111,23 +112,33 @@ static int duel_save_checkpoint(const duel_run *R)
     return r;
 }
 
+
+static const char *duel_game_error(int err)
+{
+    if (err <= -200)
+        return "the duel refused a network";
+    if (err <= -100)
+        return nrt_strerror(err + 100);
+    return neat_strerror(err);
+}
+
+/* The champion's blob as the runtime accepted it (the one path from genome
+ * to blob, tools/neat_phenotype.c), written atomically. */
 static int duel_write_blob(const char *path, const neat_genome *g, const neat_params *p)
 {
-    size_t cap = neat_blob_size(g), len;
-    uint8_t *buf = (uint8_t *)malloc(cap);
+    neat_phenotype ph;
     int err, r;
-    if (buf == NULL)
-        return -1;
-    err = neat_blob_write(g, p->n_inputs, p->n_outputs, buf, cap, &len);
+    neat_phenotype_init(&ph);
+    err = neat_phenotype_load(&ph, g, p);
     if (err) {
-        fprintf(stderr, "duel_evolve: %s: cannot encode: %s\n", path, neat_strerror(err));
-        free(buf);
+        fprintf(stderr, "duel_evolve: %s: cannot encode: %s\n", path, duel_game_error(err));
+        neat_phenotype_free(&ph);
         return -1;
     }
-    r = duel_file_replace(path, buf, len);
+    r = duel_file_replace(path, ph.blob, ph.blob_len);
     if (r != 0)
         fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
-    free(buf);
+    neat_phenotype_free(&ph);
     return r;
 }
 
@@ -276,14 +287,6 @@ static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
              rep->dominants, rep->new_dominant ? " (new)" : "", (unsigned long long)rep->games, secs);
 }
 
-static const char *duel_game_error(int err)
-{
-    if (err <= -200)
-        return "the duel refused a network";
-    if (err <= -100)
-        return nrt_strerror(err + 100);
-    return neat_strerror(err);
-}
 
 /* Generations until the configured count, a signal or an error. */
 static int duel_loop(duel_run *R)
