@@ -43,13 +43,13 @@ int duel_file_replace(const char *path, const void *data, size_t len)
         close(fd);
         unlink(tmp);
         errno = e;
-        return -1;
+        return -2;
     }
     if (close(fd) != 0 || rename(tmp, path) != 0) {
         e = errno;
         unlink(tmp);
         errno = e;
-        return -1;
+        return -2;
     }
     return 0;
 }
@@ -163,37 +163,26 @@ int duel_mkdir(const char *path)
 
 int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
 {
-    size_t len = strlen(path) + 32;
-    char *tmp = (char *)malloc(len);
-    FILE *f = NULL;
-    int fd, ok;
-
-    if (tmp == NULL) {
+    char *text = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&text, &len);
+    int r;
+    if (mem == NULL) {
         fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
         return 1;
     }
-    snprintf(tmp, len, "%s.%ld.tmp", path, (long)getpid());
-    fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-    if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
-        if (fd >= 0) {
-            close(fd);
-            remove(tmp);
-        }
-        free(tmp);
-        return 2;
-    }
-    write(f, ctx);
-    ok = !ferror(f);
-    ok = fclose(f) == 0 && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: write failed: %s\n", path, strerror(errno));
-        remove(tmp);
-        free(tmp);
+    write(mem, ctx);
+    if (fclose(mem) != 0) {
+        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
+        free(text);
         return 1;
     }
-    free(tmp);
-    return 0;
+    r = duel_file_replace(path, text, len);
+    free(text);
+    if (r == 0)
+        return 0;
+    fprintf(stderr, "duel_evolve: %s: %s: %s\n", path, r == -1 ? "cannot write" : "write failed", strerror(errno));
+    return r == -1 ? 2 : 1;
 }
 
 int duel_dir_lock(const char *dir)

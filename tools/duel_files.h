@@ -7,7 +7,9 @@
 #include <stdio.h>
 
 /* Writes data to path through path.tmp, fsync and rename: a reader sees the
- * old file or the new one, never a mix. 0 or -1 (errno set). */
+ * old file or the new one, never a mix (a path.tmp left by a killed writer
+ * is taken over by the next write of path). 0; -1 (errno set) when path.tmp
+ * cannot be created, -2 when writing or renaming it failed. */
 int duel_file_replace(const char *path, const void *data, size_t len);
 
 /* The whole file in a malloc'd buffer. 0 or -1 (errno set; ENOENT when missing). */
@@ -21,9 +23,9 @@ int duel_file_append(const char *path, const char *text);
  * A missing file is fine. 0 or -1. */
 int duel_csv_keep_before(const char *path, uint32_t generation);
 
-/* Writes a text file through write(f, ctx) into a temporary file in the
- * same directory, renamed over path only once complete. Returns 0, 2 (cannot
- * create: a bad path) or 1 (the write failed), with one line on stderr. */
+/* The text write(f, ctx) prints, put in place by duel_file_replace. Returns
+ * 0, 2 (cannot create: a bad path) or 1 (the write failed), with one line on
+ * stderr. */
 typedef void (*duel_write_fn)(FILE *f, const void *ctx);
 int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx);
 
