@@ -42,6 +42,9 @@ struct neat_coev {
 
 #define NEAT_COEV_MAX_CHAMPS 64        /* species_opponents at most */
 #define NEAT_COEV_MAX_CONFIGS 30000u   /* compare_configs at most: a comparison's wins fit 16 bits */
+#define NEAT_COEV_MAX_DRAWN 1000u      /* hof_opponents and first_opponents at most */
+/* the opponents one population meets in a generation, at most */
+#define NEAT_COEV_MAX_OPP (NEAT_COEV_MAX_CHAMPS + NEAT_COEV_MAX_DRAWN)
 
 neat_coev_params neat_coev_params_default(void)
 {
@@ -58,11 +61,11 @@ int neat_coev_params_check(const neat_coev_params *cp, const char **field)
     const char *bad = NULL;
     if (cp->species_opponents > NEAT_COEV_MAX_CHAMPS)
         bad = "species_opponents";
-    else if (cp->hof_opponents > 1000)
+    else if (cp->hof_opponents > NEAT_COEV_MAX_DRAWN)
         bad = "hof_opponents";
     else if (cp->species_opponents + cp->hof_opponents == 0)
         bad = "hof_opponents";
-    else if (cp->first_opponents == 0 || cp->first_opponents > 1000)
+    else if (cp->first_opponents == 0 || cp->first_opponents > NEAT_COEV_MAX_DRAWN)
         bad = "first_opponents";
     else if (cp->compare_configs == 0 || cp->compare_configs > NEAT_COEV_MAX_CONFIGS)
         bad = "compare_configs";
@@ -411,7 +414,7 @@ static void neat_gen_out_free(neat_gen_out *o, const neat_alloc *a)
 
 int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *rep)
 {
-    const neat_genome *opp[2][2048];
+    const neat_genome *opp[2][NEAT_COEV_MAX_OPP]; /* c->cp passed neat_coev_params_check */
     uint32_t n_opp[2], size, p, h, j, s, k, n = 0, best[2], champ_pop, cw[2];
     uint32_t *wins[2] = {NULL, NULL}, *idx = NULL, *tmp = NULL;
     neat_pop *next[2] = {NULL, NULL};
@@ -422,9 +425,6 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
 
     if (c == NULL || play == NULL)
         return NEAT_E_ARG;
-    if (c->cp.first_opponents > 2048 || c->cp.species_opponents + c->cp.hof_opponents > 2048 ||
-        c->cp.species_opponents > NEAT_COEV_MAX_CHAMPS)
-        return NEAT_E_PARAM;
     memset(&r, 0, sizeof r);
     memset(&o, 0, sizeof o);
     r.generation = c->generation;
