@@ -46,14 +46,11 @@ static int duel_has_key(const neat_cfg_key *keys, size_t n, const char *name)
 /* Where name lives when it is not in the section it was given in. */
 static const char *duel_key_home(const char *name)
 {
-    char err[8];
-    neat_params probe = neat_params_default();
     if (duel_has_key(duel_run_keys, N_RUN, name))
         return "run";
     if (duel_has_key(duel_coev_keys, N_COEV, name))
         return "coevolution";
-    /* a [neat] key: setting a probe to a harmless value tells */
-    if (neat_config_set(&probe, name, "1", err, sizeof err) == 0 || strncmp(err, "bad", 3) == 0)
+    if (neat_config_has_key(name))
         return "neat";
     return NULL;
 }

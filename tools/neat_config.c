@@ -155,6 +155,15 @@ int neat_config_set_in(const neat_cfg_key *keys, size_t n_keys, void *base, cons
     return -1;
 }
 
+int neat_config_has_key(const char *name)
+{
+    size_t i;
+    for (i = 0; i < NEAT_N_KEYS; i++)
+        if (strcmp(neat_keys[i].name, name) == 0)
+            return 1;
+    return 0;
+}
+
 int neat_config_set(neat_params *p, const char *key, const char *value, char *err, size_t err_len)
 {
     return neat_config_set_in(neat_keys, NEAT_N_KEYS, p, key, value, err, err_len);

@@ -11,6 +11,9 @@
  * (unknown key with a "did you mean", or a bad value). */
 int neat_config_set(neat_params *p, const char *key, const char *value, char *err, size_t err_len);
 
+/* 1 if name is a [neat] key. */
+int neat_config_has_key(const char *name);
+
 /* Writes every [neat] key as "key = value" lines that load back unchanged. */
 void neat_config_dump(FILE *out, const neat_params *p);
 
