@@ -4,43 +4,25 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_files.h"
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
 
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
 {
-    FILE *f;
-    long size;
-    uint8_t *b;
-
+    int r = duel_file_read(path, DUEL_BLOB_MAX, blob, len);
+    if (r == 0)
+        return 0;
     *blob = NULL;
     *len = 0;
-    f = fopen(path, "rb");
-    if (f == NULL) {
+    if (r == -1)
         fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", path, strerror(errno));
-        return -1;
-    }
-    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot read\n", path);
-        fclose(f);
-        return -1;
-    }
-    if ((unsigned long)size > DUEL_BLOB_MAX) {
-        fprintf(stderr, "duel_evolve: %s: %ld bytes, larger than any champion blob\n", path, size);
-        fclose(f);
-        return -1;
-    }
-    b = (uint8_t *)malloc((size_t)size + 1);
-    if (b == NULL || fread(b, 1, (size_t)size, f) != (size_t)size) {
-        fprintf(stderr, "duel_evolve: %s: cannot read\n", path);
-        fclose(f);
-        free(b);
-        return -1;
-    }
-    fclose(f);
-    *blob = b;
-    *len = (size_t)size;
-    return 0;
+    else if (errno == EFBIG)
+        fprintf(stderr, "duel_evolve: %s: larger than any champion blob (%lu bytes at most)\n", path,
+                (unsigned long)DUEL_BLOB_MAX);
+    else
+        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(errno));
+    return -1;
 }
 
 int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)

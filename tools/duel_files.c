@@ -54,11 +54,12 @@ int duel_file_replace(const char *path, const void *data, size_t len)
     return 0;
 }
 
-int duel_file_read(const char *path, uint8_t **data, size_t *len)
+int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)
 {
     FILE *f = fopen(path, "rb");
     uint8_t *buf = NULL;
     size_t n = 0, cap = 0;
+    int e = 0;
     if (f == NULL)
         return -1;
     for (;;) {
@@ -68,25 +69,29 @@ int duel_file_read(const char *path, uint8_t **data, size_t *len)
             cap = cap ? cap * 2 : 65536;
             nb = (uint8_t *)realloc(buf, cap);
             if (nb == NULL) {
-                free(buf);
-                fclose(f);
-                errno = ENOMEM;
-                return -1;
+                e = ENOMEM;
+                break;
             }
             buf = nb;
         }
         got = fread(buf + n, 1, cap - n, f);
         n += got;
-        if (got == 0)
+        if (n > max) {
+            e = EFBIG; /* found out after at most max + 64 KiB, however large the file */
             break;
-    }
-    if (ferror(f)) {
-        free(buf);
-        fclose(f);
-        errno = EIO;
-        return -1;
+        }
+        if (got == 0) {
+            if (ferror(f))
+                e = EIO;
+            break;
+        }
     }
     fclose(f);
+    if (e) {
+        free(buf);
+        errno = e;
+        return -2;
+    }
     *data = buf;
     *len = n;
     return 0;
@@ -111,7 +116,7 @@ int duel_csv_keep_before(const char *path, uint32_t generation)
     uint8_t *data;
     size_t len, at = 0, keep = 0;
     int first = 1, r;
-    if (duel_file_read(path, &data, &len) != 0)
+    if (duel_file_read(path, SIZE_MAX, &data, &len) != 0)
         return errno == ENOENT ? 0 : -1;
     while (at < len) {
         const uint8_t *nl = (const uint8_t *)memchr(data + at, '\n', len - at);

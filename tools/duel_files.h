@@ -12,8 +12,10 @@
  * cannot be created, -2 when writing or renaming it failed. */
 int duel_file_replace(const char *path, const void *data, size_t len);
 
-/* The whole file in a malloc'd buffer. 0 or -1 (errno set; ENOENT when missing). */
-int duel_file_read(const char *path, uint8_t **data, size_t *len);
+/* The whole file, at most max bytes, in a malloc'd buffer. 0; -1 when it
+ * cannot be opened (errno set; ENOENT when missing); -2 when it cannot be
+ * read (errno set; EFBIG when it is larger than max). */
+int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len);
 
 /* Appends text and flushes it to the disk. 0 or -1. */
 int duel_file_append(const char *path, const char *text);

@@ -559,7 +559,7 @@ int duel_cmd_resume(int argc, char **argv)
     }
 
     duel_path(path, sizeof path, R.dir, "checkpoint.bin");
-    if (duel_file_read(path, &buf, &len) != 0) {
+    if (duel_file_read(path, SIZE_MAX, &buf, &len) != 0) {
         if (errno != ENOENT) {
             fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(errno));
             return 2;
