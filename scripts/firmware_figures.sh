@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 host=$(realpath "${1:-$root/build}")
-fw=$root/runtime/examples/qemu-cortex-m/fw.sh
+fw=$root/examples/firmware/fw.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

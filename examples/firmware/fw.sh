@@ -10,8 +10,8 @@
 #   fw.sh command MACHINE ELF OUT [--icount]
 #       prints that QEMU command line.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../../.." && pwd)
-here=$root/runtime/examples/qemu-cortex-m
+root=$(cd "$(dirname "$0")/../.." && pwd)
+here=$root/examples/firmware
 
 usage() {
   sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2

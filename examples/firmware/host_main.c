@@ -48,7 +48,7 @@ int main(int argc, char **argv)
 
     if (argc != 3) {
         fprintf(stderr, "usage: fw_duels_host A.blob B.blob\n"
-                        "Plays the firmware example's games (runtime/examples/qemu-cortex-m) on this machine.\n");
+                        "Plays the firmware example's games (examples/firmware) on this machine.\n");
         return FW_HOST_EXIT_USAGE;
     }
     blob[0] = fw_host_read(argv[1], &len[0]);
