@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "duel.h"
 #include "duel_cli.h"
 
 static void duel_usage(FILE *f)

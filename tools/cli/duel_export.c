@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_files.h"
 
 #define DUEL_EXPORT_NAME_MAX 63 /* longest array name; NAME_len adds 4 */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_files.h"
 
 /* Names of the duel's inputs (docs/duelsim.md, sensors in the spec's order;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_files.h"
 
 typedef struct duel_rung {

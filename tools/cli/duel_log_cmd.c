@@ -4,6 +4,7 @@
 
 #include "duel_cli.h"
 #include "duel_lcm.h"
+#include "duel_trace.h"
 
 static void duel_log_usage(void)
 {

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_lcm.h"
 
 static void duel_node_usage(void)

@@ -4,7 +4,9 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_lcm.h"
+#include "duel_trace.h"
 
 static void duel_play_usage(void)
 {

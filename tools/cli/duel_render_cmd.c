@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_exec.h"
 #include "duel_files.h"
 #include "duel_render.h"

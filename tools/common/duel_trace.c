@@ -1,5 +1,5 @@
 /* duel_trace.c - the per-step CSV trace of a game (columns in docs/duelsim.md), printed from fixed point with 6 decimals. */
-#include "duel_cli.h"
+#include "duel_trace.h"
 
 static const char *const duel_side_names[2] = {"west", "east"};
 

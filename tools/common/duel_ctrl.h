@@ -1,0 +1,30 @@
+/* duel_ctrl.h - a controller named on the command line (a champion blob file or builtin:NAME), and blob files read whole. */
+#ifndef DUEL_CTRL_H
+#define DUEL_CTRL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "duel.h"
+
+/* A controller named on the command line: a blob file or builtin:NAME. */
+typedef struct duel_cli_ctrl {
+    duel_controller ctrl;
+    nrt_net net;
+    void *mem;
+    uint8_t *blob;
+    size_t blob_len;
+    char name[256];
+} duel_cli_ctrl;
+
+/* Reads the whole file at path into a malloc'd *blob (the caller frees it)
+ * of *len bytes, not validated; on error prints one line naming the file and
+ * the problem to stderr and returns -1 (*blob NULL). */
+int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len);
+
+/* Loads spec into c; on error prints one line naming the problem to stderr
+ * and returns -1. */
+int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec);
+void duel_cli_ctrl_close(duel_cli_ctrl *c);
+
+#endif /* DUEL_CTRL_H */
