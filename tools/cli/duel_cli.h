@@ -1,4 +1,5 @@
 /* duel_cli.h - the duel_evolve subcommands, one entry point each (dispatched by duel_evolve.c), and the dot writer render-net shares. */
+/* tools/cli/: the duel_evolve command: the dispatcher and one file per subcommand (their entry points in duel_cli.h). */
 #ifndef DUEL_CLI_H
 #define DUEL_CLI_H
 

@@ -1,4 +1,5 @@
 /* duel_config.h - a coevolution run's configuration: the [run], [coevolution] and [neat] sections of an INI file. */
+/* tools/common/: what the commands share: the run configuration and every libneat parameter in INI, run-directory files, controllers named on the command line, traces, genome -> blob -> runtime, the threaded game batches of coevolution. */
 #ifndef DUEL_CONFIG_H
 #define DUEL_CONFIG_H
 

@@ -1,4 +1,5 @@
 /* duel_lcm.h - the duel over LCM, world side: messages from and to the world, event log writing and reading, the world node. */
+/* tools/lcm/: the duel over LCM: messages, the controller node (runtime + LCM only, library duelnode), the world node, event logs written and read, champion games recorded (docs/lcm.md). */
 #ifndef DUEL_LCM_H
 #define DUEL_LCM_H
 

@@ -1,4 +1,5 @@
 /* duel_render.h - one duel frame drawn with OpenGL into an OSMesa off-screen buffer (no display), and written as PNG. */
+/* tools/render/: replays, frames, videos and network pictures: a game as frames, drawn with OSMesa and written with libpng, ffmpeg and Graphviz run as programs (docs/render.md). */
 #ifndef DUEL_RENDER_H
 #define DUEL_RENDER_H
 
