@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # lcm_cli.sh - the duel over LCM from the outside: logs against `play --trace`, bad input, three processes over
 # tcpq:// with LCM's Java hub on loopback, a killed controller, lcm-logplayer, run's champion games, Python.
-# usage: lcm_cli.sh CHECK DUEL_EVOLVE DUEL_BENCH JAVA LCM_JAR LCM_LOGPLAYER PYTHON3 PYTHON_TYPES_DIR COEV_INI
+# Hostile input: crafted logs, and a hostile publisher on the bus during a game.
+# usage: lcm_cli.sh CHECK DUEL_EVOLVE DUEL_BENCH JAVA LCM_JAR LCM_LOGPLAYER PYTHON3 PYTHON_TYPES_DIR COEV_INI LCM_HOSTILE
 set -euo pipefail
-what=$1 duel=$2 bench=$3 java=$4 jar=$5 logplayer=$6 python=$7 pytypes=$8 ini=$9
+what=$1 duel=$2 bench=$3 java=$4 jar=$5 logplayer=$6 python=$7 pytypes=$8 ini=$9 hostile=${10}
 tmp=$(mktemp -d)
 pids=()
 cleanup() {
@@ -102,14 +103,14 @@ bad-input)
   # "DUEL_STATE", 8-byte fingerprint, then the big-endian version) is refused, not guessed at
   cp "$tmp/g.lcm" "$tmp/v99.lcm"
   printf '\x63' | dd of="$tmp/v99.lcm" bs=1 seek=49 conv=notrunc status=none
-  expect_bad "v99.lcm: offset 0: DUEL_STATE: duel.state_t format version 99, this reader knows only version 1" \
+  expect_bad "v99.lcm: event 0 at offset 0: DUEL_STATE: duel.state_t format version 99, this reader knows only version 1" \
     log dump "$tmp/v99.lcm"
   expect_bad "format version 99" log info "$tmp/v99.lcm"
   expect_bad "format version 99" log dump "$tmp/v99.lcm" --channel DUEL_STATE
   # another fingerprint on the channel (another type, or another layout of it)
   cp "$tmp/g.lcm" "$tmp/fp.lcm"
   printf '\x00' | dd of="$tmp/fp.lcm" bs=1 seek=40 conv=notrunc status=none
-  expect_bad "fp.lcm: offset 0: DUEL_STATE: LCM fingerprint 0x[0-9a-f]* is not duel.state_t's" log dump "$tmp/fp.lcm"
+  expect_bad "fp.lcm: event 0 at offset 0: DUEL_STATE: LCM fingerprint 0x[0-9a-f]* is not duel.state_t's" log dump "$tmp/fp.lcm"
   # channels
   expect_bad "unknown channel 'FOO'" log dump "$tmp/g.lcm" --channel FOO
   "$duel" log dump "$tmp/g.lcm" --channel DUEL_STATE > /dev/null
@@ -255,6 +256,59 @@ python)
     PYTHONPATH="$pytypes" "$python" "$(dirname "$0")/decode_log.py" "$tmp/g.lcm" "$tmp/play.txt" ||
       fail "$game: decode_log.py"
   done
+  ;;
+hostile-logs)
+  # one-event logs whose message lies about a string's length or its size (a negative length crashed
+  # log info, log dump and render; a 2 GB one was allocated): exit 2, one line naming the event and offset
+  n=0
+  while read -r name channel bytes; do
+    "$hostile" log "$name" "$tmp/$name.lcm"
+    for cmd in "log info" "log dump" "log dump --channel $channel" "render"; do
+      set -- $cmd
+      if [ "$1" = render ]; then
+        expect_bad "$name.lcm: event 0 at offset 0: $channel: " render "$tmp/$name.lcm" --out "$tmp/frames-$name"
+        [ ! -e "$tmp/frames-$name" ] || fail "render of $name.lcm created its output"
+      elif [ "$#" -eq 2 ]; then
+        expect_bad "$name.lcm: event 0 at offset 0: $channel: " "$1" "$2" "$tmp/$name.lcm"
+      else
+        expect_bad "$name.lcm: event 0 at offset 0: $channel: " "$1" "$2" "$tmp/$name.lcm" "$3" "$4"
+      fi
+    done
+    echo "$name ($((28 + ${#channel} + bytes))-byte log): $("$duel" log info "$tmp/$name.lcm" 2>&1)"
+    n=$((n + 1))
+  done < <("$hostile" list)
+  [ "$n" -ge 10 ] || fail "only $n crafted messages"
+  [ "$(stat -c %s "$tmp/motor-negative.lcm")" -eq 94 ] || fail "motor-negative.lcm is not the 94-byte log"
+  [ "$(stat -c %s "$tmp/state-negative.lcm")" -eq 62 ] || fail "state-negative.lcm is not the 62-byte log"
+  ;;
+hostile-bus)
+  # a game over tcpq:// while a hostile peer publishes every crafted message on every duel channel every
+  # 5 ms: both kinds of node ignore them (and say how many), and the game is play's, bit for bit
+  blobs
+  start_hub
+  url=tcpq://127.0.0.1:$hub_port
+  "$hostile" publish "$url" 8 > "$tmp/hostile.txt" & hp=$!
+  pids+=("$hp")
+  sleep 0.3
+  "$duel" node controller "$tmp/net39a.blob" --side west --lcm "$url" > "$tmp/cw.txt" 2>&1 & cw=$!
+  "$duel" node controller "$tmp/net202a.blob" --side east --lcm "$url" > "$tmp/ce.txt" 2>&1 & ce=$!
+  pids+=("$cw" "$ce")
+  "$duel" node world --food 5 --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms 3000 --period-ms 2 \
+    > "$tmp/world.txt" 2> "$tmp/world.err" || fail "world: $(cat "$tmp/world.txt" "$tmp/world.err")"
+  wait "$cw" || fail "west controller: $(cat "$tmp/cw.txt")"
+  wait "$ce" || fail "east controller: $(cat "$tmp/ce.txt")"
+  wait "$hp" || fail "hostile publisher: $(cat "$tmp/hostile.txt")"
+  "$duel" play "$tmp/net39a.blob" "$tmp/net202a.blob" --food 5 --trace "$tmp/p.csv" > "$tmp/play.txt"
+  cmp "$tmp/world.txt" "$tmp/play.txt" || fail "the game under attack differs from play"
+  "$duel" log dump "$tmp/w.lcm" > "$tmp/w.csv"
+  cmp "$tmp/p.csv" "$tmp/w.csv" || fail "the recorded game under attack differs from play --trace"
+  grep -q "node world: ignored [0-9]* malformed messages; the first: DUEL_MOTOR_" "$tmp/world.err" ||
+    fail "world: $(cat "$tmp/world.err")"
+  grep -q "node controller west: ignored [0-9]* malformed messages; the first: DUEL_" "$tmp/cw.txt" ||
+    fail "west: $(cat "$tmp/cw.txt")"
+  grep -q "node controller east: ignored [0-9]* malformed messages; the first: DUEL_" "$tmp/ce.txt" ||
+    fail "east: $(cat "$tmp/ce.txt")"
+  cat "$tmp/hostile.txt" "$tmp/world.err"; grep ignored "$tmp/cw.txt" "$tmp/ce.txt"
   ;;
 *)
   echo "unknown check $what"; exit 2 ;;

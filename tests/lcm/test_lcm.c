@@ -14,6 +14,7 @@
 #include "bench_nets.h"
 #include "duel_lcm.h"
 #include "duel_replay.h"
+#include "hostile_msgs.h"
 
 /* ---- fixtures: random networks with hidden nodes and recurrent connections ---- */
 
@@ -153,6 +154,60 @@ static void test_decode_checks(void **state)
     m.side = 2;
     n = duel_sense_t_encode(buf, 0, (int)sizeof buf, &m);
     assert_int_equal(duel_msg_decode_sense(buf, (size_t)n, &back, msg, sizeof msg), DUEL_NODE_E_MALFORMED);
+}
+
+/* Messages that lie about a string's length or their size (hostile_msgs.c):
+ * every decoder refuses each of them before the generated code allocates
+ * (a negative length crashed it, 2 GB were allocated and leaked), and a log
+ * holding one stops at event 0 with the reason. */
+static void test_decode_hostile(void **state)
+{
+    hostile_msg h;
+    duel_sense_t se;
+    duel_motor_t mo;
+    duel_state_t st;
+    duel_lcm_game *g;
+    char msg[400], path[256];
+    int i, n = 0;
+    (void)state;
+    tl_path(path, sizeof path, "hostile");
+    for (i = 0; i < hostile_count(); i++) {
+        assert_int_equal(hostile_get(i, &h), 0);
+        assert_true(duel_msg_decode_sense(h.data, h.len, &se, msg, sizeof msg) != DUEL_NODE_OK);
+        assert_true(duel_msg_decode_motor(h.data, h.len, &mo, msg, sizeof msg) != DUEL_NODE_OK);
+        assert_true(duel_msg_decode_state(h.data, h.len, &st, msg, sizeof msg) != DUEL_NODE_OK);
+        assert_int_equal(hostile_write_log(&h, path), 0);
+        assert_true(duel_lcm_game_read(&g, path, msg, sizeof msg) != 0);
+        assert_non_null(strstr(msg, "event 0 at offset 0: "));
+        assert_non_null(strstr(msg, h.channel));
+        assert_int_equal(g->events, 1);
+        assert_int_equal(g->started, 0);
+        duel_lcm_game_free(g);
+        n++;
+    }
+    assert_true(n >= 10);
+    /* the bound: a state message with two names of the longest length decodes, one byte more does not */
+    {
+        uint8_t buf[DUEL_MSG_MAX + 8];
+        char name[DUEL_NODE_NAME_MAX + 1];
+        char *names[2];
+        duel_world w;
+        duel_event ev;
+        int len;
+        memset(name, 'n', DUEL_NODE_NAME_MAX);
+        name[DUEL_NODE_NAME_MAX] = '\0';
+        names[0] = names[1] = name;
+        duel_world_init(&w, DUEL_TRAINING);
+        memset(&ev, 0, sizeof ev);
+        duel_lcm_state_fill(&st, &w, &ev, DUEL_TRAINING, names, 0);
+        len = duel_state_t_encode(buf, 0, (int)sizeof buf, &st);
+        assert_int_equal(len, (int)DUEL_MSG_MAX);
+        assert_int_equal(duel_msg_decode_state(buf, (size_t)len, &st, msg, sizeof msg), DUEL_NODE_OK);
+        assert_string_equal(st.controller[1], name);
+        duel_state_t_decode_cleanup(&st);
+        assert_int_equal(duel_msg_decode_state(buf, (size_t)len + 1, &st, msg, sizeof msg), DUEL_NODE_E_MALFORMED);
+    }
+    unlink(path);
 }
 
 /* ---- state messages: every state of a game, encoded, decoded and read back ---- */
@@ -603,6 +658,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_decode_checks),
+        cmocka_unit_test(test_decode_hostile),
         cmocka_unit_test(test_state_roundtrip),
         cmocka_unit_test(test_state_read_rejects),
         cmocka_unit_test(test_memq_nodes_equal_play),

@@ -203,7 +203,8 @@ static int duel_log_dump_channel(const char *path, const char *channel)
             }
         }
         if (bad)
-            snprintf(err, sizeof err, "%s: offset %llu: %s: %s", path, (unsigned long long)e.offset, channel, msg);
+            snprintf(err, sizeof err, "%s: event %llu at offset %llu: %s: %s", path, (unsigned long long)e.index,
+                     (unsigned long long)e.offset, channel, msg);
     }
     duel_lcm_reader_close(&rd);
     if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -112,6 +112,9 @@ static int duel_node_controller_cmd(int argc, char **argv)
     err = duel_node_ctrl_start(&node, lcm, &c.net, side, c.name);
     if (err == 0)
         err = duel_node_ctrl_run(&node, wait_ms, timeout_ms);
+    if (node.ignored)
+        fprintf(stderr, "duel_evolve: node controller %s: ignored %lu malformed message%s; the first: %s\n",
+                side ? "east" : "west", (unsigned long)node.ignored, node.ignored == 1 ? "" : "s", node.ignored_msg);
     if (err) {
         fprintf(stderr, "duel_evolve: node controller %s: %s\n", side ? "east" : "west",
                 node.msg[0] ? node.msg : "cannot subscribe");
@@ -194,6 +197,9 @@ static int duel_node_world_cmd(int argc, char **argv)
     }
     err = duel_node_world_run(lcm, &o, &r);
     lcm_destroy(lcm);
+    if (r.ignored)
+        fprintf(stderr, "duel_evolve: node world: ignored %lu malformed message%s; the first: %s\n",
+                (unsigned long)r.ignored, r.ignored == 1 ? "" : "s", r.ignored_msg);
     /* a game lost by forfeit is a game: its log is kept */
     if (o.rec != NULL && duel_lcm_rec_close(&rec, err == 0 || r.forfeit != 0, err_text, sizeof err_text) != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err_text);

@@ -82,6 +82,8 @@ typedef struct duel_node_world_result {
     int forfeit;          /* DUEL_STATE_T_FORFEIT_* */
     char name[2][DUEL_NODE_NAME_MAX + 1];
     char msg[512];        /* what went wrong, when the return is not 0 */
+    uint32_t ignored;     /* motor messages ignored: they failed checked decoding (a forgery, or damage) */
+    char ignored_msg[320]; /* the first of them, and why */
 } duel_node_world_result;
 
 typedef struct duel_node_world {
@@ -109,6 +111,7 @@ int duel_node_world_run(lcm_t *lcm, const duel_node_world_opts *o, duel_node_wor
 
 /* ---- reading an LCM event log (duel_lcm_log.c) ---- */
 typedef struct duel_lcm_event {
+    uint64_t index;       /* its place in the file: 0 for the first event (not the event number it claims) */
     uint64_t offset;      /* of its sync word in the file */
     int64_t eventnum, utime;
     const char *channel;  /* NUL-terminated, valid until the next read */
@@ -120,6 +123,7 @@ typedef struct duel_lcm_reader {
     FILE *f;
     char path[4096];
     uint64_t offset, size;
+    uint64_t index;       /* events read so far */
     uint8_t *buf;
     size_t cap;
 } duel_lcm_reader;

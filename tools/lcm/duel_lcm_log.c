@@ -99,6 +99,7 @@ int duel_lcm_reader_next(duel_lcm_reader *r, duel_lcm_event *ev, char *err, size
         return -1;
     }
     r->buf[clen] = '\0';
+    ev->index = r->index;
     ev->offset = r->offset;
     ev->eventnum = (int64_t)duel_lcm_be64(h + 4);
     ev->utime = (int64_t)duel_lcm_be64(h + 12);
@@ -111,6 +112,7 @@ int duel_lcm_reader_next(duel_lcm_reader *r, duel_lcm_event *ev, char *err, size
         return -1;
     }
     r->offset += DUEL_LCM_HEADER + clen + dlen;
+    r->index++;
     return 1;
 }
 
@@ -282,7 +284,8 @@ int duel_lcm_game_read(duel_lcm_game **out, const char *path, char *err, size_t 
             continue;
         }
         if (duel_lcm_take(g, &e, msg, sizeof msg) != 0) {
-            snprintf(err, err_len, "%s: offset %llu: %s: %s", path, (unsigned long long)e.offset, e.channel, msg);
+            snprintf(err, err_len, "%s: event %llu at offset %llu: %s: %s", path, (unsigned long long)e.index,
+                     (unsigned long long)e.offset, e.channel, msg);
             rc = -2; /* a message this reader must not guess at: stop, keep what came before */
             break;
         }

@@ -39,6 +39,15 @@
 #define DUEL_NODE_NAME_MAX 255 /* controller names are cut to this many bytes */
 #define DUEL_NODE_HELLO_MS 100 /* a controller repeats its hello this often until the game starts */
 
+/* Encoded sizes (the 8-byte fingerprint included) of the fixed parts of the
+ * messages; each string adds 4 bytes of length and its bytes with the NUL. */
+#define DUEL_MSG_SENSE_SIZE 147u /* fingerprint, version, side, step, input[13], value[13] */
+#define DUEL_MSG_MOTOR_HEAD 47u  /* fingerprint, version, side, step, output[3], value[3]; then controller */
+#define DUEL_MSG_STATE_HEAD 20u  /* fingerprint, version, step, food_config; then controller[2] */
+#define DUEL_MSG_STATE_TAIL 201u /* x[2] .. energy_units[2] */
+/* No duel message is larger (a state message with two 255-byte names). */
+#define DUEL_MSG_MAX (DUEL_MSG_STATE_HEAD + 2u * (4u + DUEL_NODE_NAME_MAX + 1u) + DUEL_MSG_STATE_TAIL)
+
 /* ---- errors ---- */
 enum duel_node_error {
     DUEL_NODE_OK = 0,
@@ -53,7 +62,8 @@ enum duel_node_error {
 
 /* ---- checked decoding (duel_node_msg.c) ----
  * Each checks the fingerprint, then the format version (the first field),
- * then decodes. 0, or a DUEL_NODE_E_* code with one line in msg saying what
+ * then the size and every string (length 1..DUEL_NODE_NAME_MAX + 1, within
+ * the message, ending in its only NUL), then decodes. 0, or a DUEL_NODE_E_* code with one line in msg saying what
  * is wrong (no file or channel: the caller adds those). Free a decoded motor
  * or state message with duel_motor_t_decode_cleanup / duel_state_t_decode_cleanup. */
 int duel_msg_decode_sense(const void *data, size_t len, duel_sense_t *m, char *msg, size_t msg_len);
@@ -72,6 +82,8 @@ typedef struct duel_node_ctrl {
     int8_t outcome, forfeit;  /* from that message */
     int err;                  /* the first error (a DUEL_NODE_E_*), 0 while fine */
     char msg[320];            /* its description */
+    uint32_t ignored;         /* messages ignored: they failed checked decoding (a forgery, or damage) */
+    char ignored_msg[320];    /* the first of them, and why */
     lcm_subscription_t *sub_sense, *sub_state;
 } duel_node_ctrl;
 

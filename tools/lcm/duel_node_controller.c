@@ -29,6 +29,13 @@ static void duel_node_fail(duel_node_ctrl *c, int err, const char *fmt, ...)
     va_end(ap);
 }
 
+/* A message that fails checked decoding is counted and its first reason kept. */
+static void duel_node_ignore(duel_node_ctrl *c, const char *channel, const char *why)
+{
+    if (c->ignored++ == 0)
+        snprintf(c->ignored_msg, sizeof c->ignored_msg, "%s: %s", channel, why);
+}
+
 static int duel_node_publish(duel_node_ctrl *c, int32_t step, const nrt_q15 *out)
 {
     duel_motor_t m;
@@ -61,8 +68,8 @@ static void duel_node_on_sense(const lcm_recv_buf_t *rbuf, const char *channel, 
     if (c->err)
         return;
     err = duel_msg_decode_sense(rbuf->data, rbuf->data_size, &s, why, sizeof why);
-    if (err) {
-        duel_node_fail(c, err, "%s: %s", channel, why);
+    if (err) { /* anyone can publish: a forged or broken message decides nothing */
+        duel_node_ignore(c, channel, why);
         return;
     }
     if (s.side != c->side) {
@@ -94,8 +101,8 @@ static void duel_node_on_state(const lcm_recv_buf_t *rbuf, const char *channel, 
     if (c->err)
         return;
     err = duel_msg_decode_state(rbuf->data, rbuf->data_size, &st, why, sizeof why);
-    if (err) {
-        duel_node_fail(c, err, "%s: %s", channel, why);
+    if (err) { /* anyone can publish: a forged or broken message decides nothing */
+        duel_node_ignore(c, channel, why);
         return;
     }
     if (st.outcome != DUEL_STATE_T_RUNNING && c->next_step >= 0) {

@@ -1,5 +1,6 @@
-/* duel_node_msg.c - duel LCM messages decoded only after their fingerprint and format version are known. */
+/* duel_node_msg.c - duel LCM messages decoded only after their fingerprint, format version, size and every string length are checked. */
 #include <stdio.h>
+#include <string.h>
 
 #include "duel_node.h"
 
@@ -26,7 +27,7 @@ static int duel_msg_check(const void *data, size_t len, int64_t hash, int32_t ve
     const uint8_t *p = (const uint8_t *)data;
     uint64_t got;
     int32_t v;
-    if (data == NULL || len < 12 || len > 0x7fffffff) {
+    if (data == NULL || len < 12) {
         snprintf(msg, msg_len, "a %zu-byte message, too short for %s", len, type);
         return DUEL_NODE_E_MALFORMED;
     }
@@ -45,9 +46,57 @@ static int duel_msg_check(const void *data, size_t len, int64_t hash, int32_t ve
     return DUEL_NODE_OK;
 }
 
+/* The generated decoder allocates and copies whatever length a string
+ * claims, so the layout is walked here first: `head` fixed bytes (the
+ * fingerprint included), then n_strings strings (an int32 length counting
+ * the NUL, 1..DUEL_NODE_NAME_MAX + 1, and that many bytes ending in a NUL),
+ * then exactly `tail` fixed bytes. Only a message that passes reaches the
+ * decoder, which then cannot fail or over-allocate. */
+static int duel_msg_layout(const uint8_t *p, size_t len, size_t head, int n_strings, size_t tail, const char *type,
+                           char *msg, size_t msg_len)
+{
+    size_t off = head;
+    int i;
+    if (len > DUEL_MSG_MAX) {
+        snprintf(msg, msg_len, "a %zu-byte %s, larger than any duel message (%u bytes at most)", len, type,
+                 (unsigned)DUEL_MSG_MAX);
+        return DUEL_NODE_E_MALFORMED;
+    }
+    for (i = 0; i < n_strings; i++) {
+        int32_t n;
+        if (len - off < 4) {
+            snprintf(msg, msg_len, "a %zu-byte %s that ends inside string %d's length", len, type, i);
+            return DUEL_NODE_E_MALFORMED;
+        }
+        n = duel_msg_be32(p + off);
+        off += 4;
+        if (n < 1 || n > DUEL_NODE_NAME_MAX + 1 || (size_t)n > len - off) {
+            snprintf(msg, msg_len, "%s string %d claims %ld bytes (1 to %d, and at most the %zu left)", type, i,
+                     (long)n, DUEL_NODE_NAME_MAX + 1, len - off);
+            return DUEL_NODE_E_MALFORMED;
+        }
+        if (p[off + (size_t)n - 1] != 0 || memchr(p + off, 0, (size_t)n - 1) != NULL) {
+            snprintf(msg, msg_len, "%s string %d is not %ld bytes ending in its only NUL", type, i, (long)n);
+            return DUEL_NODE_E_MALFORMED;
+        }
+        off += (size_t)n;
+    }
+    if (len - off != tail) {
+        if (n_strings == 0)
+            snprintf(msg, msg_len, "a %zu-byte %s, which has %zu bytes", len, type, tail);
+        else
+            snprintf(msg, msg_len, "a %zu-byte %s: %zu bytes where its layout has %zu after the strings", len, type,
+                     len - off, tail);
+        return DUEL_NODE_E_MALFORMED;
+    }
+    return DUEL_NODE_OK;
+}
+
 int duel_msg_decode_sense(const void *data, size_t len, duel_sense_t *m, char *msg, size_t msg_len)
 {
     int err = duel_msg_check(data, len, __duel_sense_t_get_hash(), DUEL_SENSE_T_VERSION, "duel.sense_t", msg, msg_len);
+    if (!err)
+        err = duel_msg_layout((const uint8_t *)data, len, 0, 0, DUEL_MSG_SENSE_SIZE, "duel.sense_t", msg, msg_len);
     if (err)
         return err;
     if (duel_sense_t_decode(data, 0, (int)len, m) != (int)len) {
@@ -64,10 +113,14 @@ int duel_msg_decode_sense(const void *data, size_t len, duel_sense_t *m, char *m
 int duel_msg_decode_motor(const void *data, size_t len, duel_motor_t *m, char *msg, size_t msg_len)
 {
     int err = duel_msg_check(data, len, __duel_motor_t_get_hash(), DUEL_MOTOR_T_VERSION, "duel.motor_t", msg, msg_len);
+    if (!err)
+        err = duel_msg_layout((const uint8_t *)data, len, DUEL_MSG_MOTOR_HEAD, 1, 0, "duel.motor_t", msg, msg_len);
     if (err)
         return err;
+    memset(m, 0, sizeof *m); /* what a failed decode allocated can be freed */
     if (duel_motor_t_decode(data, 0, (int)len, m) != (int)len) {
         snprintf(msg, msg_len, "a %zu-byte duel.motor_t that does not decode", len);
+        duel_motor_t_decode_cleanup(m);
         return DUEL_NODE_E_MALFORMED;
     }
     if (m->side != 0 && m->side != 1) {
@@ -81,10 +134,15 @@ int duel_msg_decode_motor(const void *data, size_t len, duel_motor_t *m, char *m
 int duel_msg_decode_state(const void *data, size_t len, duel_state_t *m, char *msg, size_t msg_len)
 {
     int err = duel_msg_check(data, len, __duel_state_t_get_hash(), DUEL_STATE_T_VERSION, "duel.state_t", msg, msg_len);
+    if (!err)
+        err = duel_msg_layout((const uint8_t *)data, len, DUEL_MSG_STATE_HEAD, 2, DUEL_MSG_STATE_TAIL,
+                              "duel.state_t", msg, msg_len);
     if (err)
         return err;
+    memset(m, 0, sizeof *m);
     if (duel_state_t_decode(data, 0, (int)len, m) != (int)len) {
         snprintf(msg, msg_len, "a %zu-byte duel.state_t that does not decode", len);
+        duel_state_t_decode_cleanup(m);
         return DUEL_NODE_E_MALFORMED;
     }
     return DUEL_NODE_OK;
