@@ -1,7 +1,6 @@
 /* neat_bench.c - the NEAT paper's benchmarks (XOR, double pole with and without velocities) and the activation speed. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
-#include <ini.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,6 +10,7 @@
 
 #include "bench.h"
 #include "neat_config.h"
+#include "neat_ini.h"
 #include "nrt.h"
 
 #ifndef NEAT_BENCH_DIR
@@ -29,52 +29,24 @@ static const neat_cfg_key bench_keys[] = {
 };
 #define BENCH_N_KEYS (sizeof bench_keys / sizeof bench_keys[0])
 
-typedef struct bench_load {
-    bench_cfg *cfg;
-    const char *path;
-    char err[512];
-} bench_load;
-
-/* Debian's inih passes no line number: returning 0 makes ini_parse return
- * the line of the first error, and the message waits here until then. */
-static int bench_ini_handler(void *user, const char *section, const char *name, const char *value)
+static int bench_ini_handler(void *user, const char *section, const char *name, const char *value, char *err,
+                             size_t err_len)
 {
-    bench_load *L = (bench_load *)user;
-    char msg[400];
-    int bad;
+    bench_cfg *cfg = (bench_cfg *)user;
     if (strcmp(section, "neat") == 0)
-        bad = neat_config_set(&L->cfg->neat, name, value, msg, sizeof msg);
-    else if (strcmp(section, "bench") == 0)
-        bad = neat_config_set_in(bench_keys, BENCH_N_KEYS, L->cfg, name, value, msg, sizeof msg);
-    else {
-        snprintf(msg, sizeof msg, "unknown section [%s] (expected [bench] or [neat])", section);
-        bad = 1;
-    }
-    if (bad) {
-        snprintf(L->err, sizeof L->err, "%s", msg);
-        return 0;
-    }
-    return 1;
+        return neat_config_set(&cfg->neat, name, value, err, err_len);
+    if (strcmp(section, "bench") == 0)
+        return neat_config_set_in(bench_keys, BENCH_N_KEYS, cfg, name, value, err, err_len);
+    snprintf(err, err_len, "unknown section [%s] (expected [bench] or [neat])", section);
+    return -1;
 }
 
 static int bench_load_config(bench_cfg *cfg, const char *path)
 {
-    bench_load L;
     const char *field;
-    int r;
-    memset(&L, 0, sizeof L);
-    L.cfg = cfg;
-    L.path = path;
-    r = ini_parse(path, bench_ini_handler, &L);
-    if (r == -1) {
-        fprintf(stderr, "neat_bench: %s: cannot open: %s\n", path, strerror(errno));
-        return -1;
-    }
-    if (r != 0) {
-        if (L.err[0])
-            fprintf(stderr, "neat_bench: %s:%d: %s\n", path, r, L.err);
-        else
-            fprintf(stderr, "neat_bench: %s:%d: syntax error\n", path, r);
+    char err[600];
+    if (neat_ini_parse_file(path, bench_ini_handler, cfg, err, sizeof err) != 0) {
+        fprintf(stderr, "neat_bench: %s\n", err);
         return -1;
     }
     if (neat_params_check(&cfg->neat, &field) != NEAT_OK) {

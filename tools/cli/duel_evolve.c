@@ -1,4 +1,5 @@
 /* duel_evolve.c - the duel_evolve command: subcommand dispatch. */
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -29,36 +30,39 @@ static void duel_usage(FILE *f)
                "Robot duels of spec v%d (docs/duelsim.md).\n", DUEL_SPEC_VERSION);
 }
 
+typedef struct duel_command {
+    const char *name;
+    int (*run)(int argc, char **argv);
+} duel_command;
+
+static const duel_command duel_commands[] = {
+    {"run", duel_cmd_run},         {"resume", duel_cmd_resume},   {"config", duel_cmd_config},
+    {"ladder", duel_cmd_ladder},   {"play", duel_cmd_play},       {"inspect", duel_cmd_inspect},
+    {"dot", duel_cmd_dot},         {"node", duel_cmd_node},       {"log", duel_cmd_log},
+    {"render", duel_cmd_render},   {"render-net", duel_cmd_render_net}, {"export", duel_cmd_export},
+};
+
+/* What a command printed must have reached standard output: a full disk or
+ * a closed pipe (`> /dev/full`) is a failure, whatever the command thought. */
+static int duel_stdout_status(const char *cmd, int rc)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "duel_evolve: %s: cannot write standard output: %s\n", cmd, strerror(errno));
+        return rc != 0 ? rc : 1;
+    }
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
+    size_t i;
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         duel_usage(argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+        return duel_stdout_status("--help", argc < 2 ? 2 : 0);
     }
-    if (strcmp(argv[1], "run") == 0)
-        return duel_cmd_run(argc - 2, argv + 2);
-    if (strcmp(argv[1], "resume") == 0)
-        return duel_cmd_resume(argc - 2, argv + 2);
-    if (strcmp(argv[1], "config") == 0)
-        return duel_cmd_config(argc - 2, argv + 2);
-    if (strcmp(argv[1], "ladder") == 0)
-        return duel_cmd_ladder(argc - 2, argv + 2);
-    if (strcmp(argv[1], "play") == 0)
-        return duel_cmd_play(argc - 2, argv + 2);
-    if (strcmp(argv[1], "inspect") == 0)
-        return duel_cmd_inspect(argc - 2, argv + 2);
-    if (strcmp(argv[1], "dot") == 0)
-        return duel_cmd_dot(argc - 2, argv + 2);
-    if (strcmp(argv[1], "node") == 0)
-        return duel_cmd_node(argc - 2, argv + 2);
-    if (strcmp(argv[1], "log") == 0)
-        return duel_cmd_log(argc - 2, argv + 2);
-    if (strcmp(argv[1], "render") == 0)
-        return duel_cmd_render(argc - 2, argv + 2);
-    if (strcmp(argv[1], "render-net") == 0)
-        return duel_cmd_render_net(argc - 2, argv + 2);
-    if (strcmp(argv[1], "export") == 0)
-        return duel_cmd_export(argc - 2, argv + 2);
+    for (i = 0; i < sizeof duel_commands / sizeof duel_commands[0]; i++)
+        if (strcmp(argv[1], duel_commands[i].name) == 0)
+            return duel_stdout_status(argv[1], duel_commands[i].run(argc - 2, argv + 2));
     fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
     duel_usage(stderr);
     return 2;

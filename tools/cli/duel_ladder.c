@@ -8,6 +8,7 @@
 
 #include "duel_cli.h"
 #include "duel_ctrl.h"
+#include "duel_dominance.h"
 #include "duel_files.h"
 
 typedef struct duel_rung {
@@ -64,50 +65,42 @@ static void *duel_ladder_worker(void *arg)
 /* The dominants listed in DIR/dominance.csv, with their blobs from champions/. */
 static int duel_ladder_read(const char *dir, duel_rung **out, uint32_t *n_out)
 {
-    char path[4200], line[4096];
-    FILE *f;
-    duel_rung *rungs = NULL;
-    uint32_t n = 0, lineno = 0;
-    snprintf(path, sizeof path, "%s/dominance.csv", dir);
-    f = fopen(path, "r");
-    if (f == NULL) {
-        fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", path, strerror(errno));
+    char err[4400], blob[4200];
+    duel_dominance_row *rows;
+    duel_rung *rungs;
+    uint32_t n, k;
+    if (duel_dominance_read(dir, &rows, &n, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
         return -1;
     }
-    while (fgets(line, sizeof line, f) != NULL) {
-        duel_rung *r, *nr;
-        char blob[4200];
-        lineno++;
-        if (lineno == 1)
-            continue; /* header */
-        nr = (duel_rung *)realloc(rungs, (n + 1) * sizeof *rungs);
-        if (nr == NULL)
-            break;
-        rungs = nr;
-        r = &rungs[n];
-        memset(r, 0, sizeof *r);
-        if (sscanf(line, "%u,%u,%7[^,],%u,%u", &r->level, &r->generation, r->pop, &r->hidden, &r->conns) != 5) {
-            fprintf(stderr, "duel_evolve: %s:%u: not a dominance row\n", path, lineno);
-            fclose(f);
-            free(rungs);
-            return -1;
-        }
+    if (n == 0) {
+        fprintf(stderr, "duel_evolve: %s/dominance.csv: no dominant strategy yet\n", dir);
+        free(rows);
+        return -1;
+    }
+    rungs = (duel_rung *)calloc(n, sizeof *rungs);
+    if (rungs == NULL) {
+        fprintf(stderr, "duel_evolve: ladder: out of memory\n");
+        free(rows);
+        return -1;
+    }
+    for (k = 0; k < n; k++) {
+        duel_rung *r = &rungs[k];
+        r->level = rows[k].level;
+        r->generation = rows[k].generation;
+        snprintf(r->pop, sizeof r->pop, "%s", rows[k].pop);
+        r->hidden = rows[k].hidden;
+        r->conns = rows[k].conns;
         snprintf(blob, sizeof blob, "%s/champions/gen-%05u.blob", dir, r->generation);
         if (duel_cli_ctrl_open(&r->ctrl, blob) != 0) {
-            fclose(f);
-            while (n > 0)
-                duel_cli_ctrl_close(&rungs[--n].ctrl);
+            while (k > 0)
+                duel_cli_ctrl_close(&rungs[--k].ctrl);
             free(rungs);
+            free(rows);
             return -1;
         }
-        n++;
     }
-    fclose(f);
-    if (n == 0) {
-        fprintf(stderr, "duel_evolve: %s: no dominant strategy yet\n", path);
-        free(rungs);
-        return -1;
-    }
+    free(rows);
     *out = rungs;
     *n_out = n;
     return 0;

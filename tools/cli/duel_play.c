@@ -5,6 +5,7 @@
 
 #include "duel_cli.h"
 #include "duel_ctrl.h"
+#include "duel_files.h"
 #include "duel_lcm.h"
 #include "duel_trace.h"
 
@@ -93,15 +94,17 @@ int duel_cmd_play(int argc, char **argv)
     } else {
         duel_result r;
         duel_lcm_game_rec lg;
+        duel_out trace;
         FILE *tf = NULL;
         if (trace_path != NULL) {
-            tf = fopen(trace_path, "w");
-            if (tf == NULL) {
+            /* written as TRACE.tmp, put in place only when the game and its log are */
+            if (duel_out_open(&trace, trace_path) != 0) {
                 fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", trace_path, strerror(errno));
                 duel_cli_ctrl_close(&a);
                 duel_cli_ctrl_close(&b);
                 return 2;
             }
+            tf = trace.f;
             duel_trace_header(tf);
         }
         if (lcm_path != NULL) {
@@ -111,7 +114,7 @@ int duel_cmd_play(int argc, char **argv)
                                        sizeof lerr) != 0) {
                 fprintf(stderr, "duel_evolve: %s\n", lerr);
                 if (tf != NULL)
-                    fclose(tf);
+                    duel_out_abort(&trace);
                 duel_cli_ctrl_close(&a);
                 duel_cli_ctrl_close(&b);
                 return 2;
@@ -128,9 +131,13 @@ int duel_cmd_play(int argc, char **argv)
             err = a_west ? duel_play(&a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, tf)
                          : duel_play(&b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, tf);
         }
-        if (tf != NULL && fclose(tf) != 0) {
-            fprintf(stderr, "duel_evolve: %s: write failed\n", trace_path);
-            rc = 1;
+        if (tf != NULL) {
+            if (err != 0 || rc != 0) {
+                duel_out_abort(&trace);
+            } else if (duel_out_commit(&trace) != 0) {
+                fprintf(stderr, "duel_evolve: %s: write failed: %s\n", trace_path, strerror(errno));
+                rc = 1;
+            }
         }
         if (err) {
             fprintf(stderr, "duel_evolve: play: game failed (%d)\n", err);

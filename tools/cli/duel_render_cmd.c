@@ -54,7 +54,7 @@ static int duel_rc_probe(const char *path, const char *suffix)
         errno = ENAMETOOLONG;
         return -1;
     }
-    fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0666); /* a stale one of ours is taken over */
     if (fd < 0)
         return -1;
     close(fd);
@@ -119,7 +119,7 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
         pattern[j++] = dir[i];
     }
     pattern[j] = '\0';
-    if (snprintf(tmp, sizeof tmp, "%s.%ld.tmp", video, (long)getpid()) >= (int)sizeof tmp ||
+    if (snprintf(tmp, sizeof tmp, "%s.tmp", video) >= (int)sizeof tmp ||
         strlen(pattern) + 16 >= sizeof pattern || snprintf(out, sizeof out, "file:%s", tmp) >= (int)sizeof out) {
         fprintf(stderr, "duel_evolve: render: %s: name too long\n", video);
         return -1;
@@ -161,7 +161,7 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
             fprintf(stderr, "duel_evolve: render: %s: %s\n", video, msg);
         return -1;
     }
-    if (rename(tmp, video) != 0) {
+    if (duel_file_commit(tmp, video) != 0) {
         fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
         remove(tmp);
         return -1;
@@ -249,8 +249,7 @@ int duel_cmd_render(int argc, char **argv)
                             "ffmpeg)\n");
             return 2;
         }
-        snprintf(suffix, sizeof suffix, ".%ld.tmp", (long)getpid());
-        if (duel_rc_probe(video, suffix) != 0) {
+        if (duel_rc_probe(video, ".tmp") != 0) {
             fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
             return 2;
         }
@@ -387,13 +386,13 @@ int duel_cmd_render_net(int argc, char **argv)
         free(text);
         return 1;
     }
-    if (snprintf(tmp_dot, sizeof tmp_dot, "%s.%ld.dot.tmp", out, (long)getpid()) >= (int)sizeof tmp_dot ||
-        snprintf(tmp_png, sizeof tmp_png, "%s.%ld.tmp", out, (long)getpid()) >= (int)sizeof tmp_png) {
+    if (snprintf(tmp_dot, sizeof tmp_dot, "%s.dot.tmp", out) >= (int)sizeof tmp_dot ||
+        snprintf(tmp_png, sizeof tmp_png, "%s.tmp", out) >= (int)sizeof tmp_png) {
         fprintf(stderr, "duel_evolve: render-net: %s: name too long\n", out);
         free(text);
         return 2;
     }
-    fd = open(tmp_dot, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    fd = open(tmp_dot, O_WRONLY | O_CREAT | O_TRUNC, 0666);
     if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
         fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
         if (fd >= 0) {
@@ -425,7 +424,7 @@ int duel_cmd_render_net(int argc, char **argv)
         else
             fprintf(stderr, "duel_evolve: render-net: %s: %s\n", out, msg);
         rc = 1;
-    } else if (rename(tmp_png, out) != 0) {
+    } else if (duel_file_commit(tmp_png, out) != 0) {
         fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
         rc = 1;
     }

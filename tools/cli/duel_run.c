@@ -1,5 +1,6 @@
 /* duel_run.c - duel_evolve run, resume and config: a coevolution run in a run directory, checkpointed every generation. */
 #define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <errno.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -41,6 +42,7 @@ typedef struct duel_run {
     uint32_t gen_in_flight;
     int bar_shown;
     double bar_drawn;          /* when the bar was last drawn */
+    int log_failed;            /* log.txt could not be written: the run stops after the generation */
 } duel_run;
 
 static double duel_now(void)
@@ -56,7 +58,7 @@ static void duel_path(char *out, size_t cap, const char *dir, const char *name)
 }
 
 /* One timestamped line in DIR/log.txt (and nothing else: the log is for people). */
-static void duel_log(const duel_run *R, const char *fmt, ...)
+static void duel_log(duel_run *R, const char *fmt, ...)
 {
     char path[4200], line[1200], stamp[64];
     time_t now = time(NULL);
@@ -71,8 +73,10 @@ static void duel_log(const duel_run *R, const char *fmt, ...)
     va_end(ap);
     strcat(line, "\n");
     duel_path(path, sizeof path, R->dir, "log.txt");
-    if (duel_file_append(path, line) != 0)
+    if (!R->log_failed && duel_file_append(path, line) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+        R->log_failed = 1;
+    }
 }
 
 static int duel_write_config(const duel_run *R)
@@ -164,7 +168,8 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
         return -1;
 
     duel_path(path, sizeof path, R->dir, "generations.csv");
-    if (stat(path, &st) != 0 &&
+    /* missing, or left empty by a header write that failed: the header first */
+    if ((stat(path, &st) != 0 || st.st_size == 0) &&
         duel_file_append(path, "generation,population,best_fitness,mean_fitness,species,delta_t,mean_hidden,"
                                "mean_connections,best_hidden,best_connections,games,champion,seconds\n") != 0)
         goto fail;
@@ -180,20 +185,30 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
 
     if (rep->new_dominant) {
         neat_dominant d;
-        size_t n;
+        size_t n, cap;
+        char *drow;
+        int bad;
         neat_coev_dominant(R->coev, rep->dominants - 1u, &d);
         duel_path(path, sizeof path, R->dir, "dominance.csv");
-        if (stat(path, &st) != 0 &&
+        if ((stat(path, &st) != 0 || st.st_size == 0) &&
             duel_file_append(path, "level,generation,population,hidden,connections,wins\n") != 0)
             goto fail;
-        n = (size_t)snprintf(row, sizeof row, "%u,%u,%s,%u,%u,", rep->dominants, d.generation,
-                             duel_pop_name(d.pop), neat_genome_hidden_count(d.genome),
-                             neat_genome_enabled_count(d.genome));
+        /* one "w:l" of at most 2 x 10 digits, a colon and a space per level beaten: sized by the run */
+        cap = 128 + (size_t)d.n_beaten * 24;
+        drow = (char *)malloc(cap);
+        if (drow == NULL) {
+            errno = ENOMEM;
+            goto fail;
+        }
+        n = (size_t)snprintf(drow, cap, "%u,%u,%s,%u,%u,", rep->dominants, d.generation, duel_pop_name(d.pop),
+                             neat_genome_hidden_count(d.genome), neat_genome_enabled_count(d.genome));
         /* "w:l" against d(n-1), d(n-2), ..., d1: the comparisons it won, in the order played */
-        for (k = 0; k < d.n_beaten && n + 16 < sizeof row; k++)
-            n += (size_t)snprintf(row + n, sizeof row - n, "%s%u:%u", k ? " " : "", d.wins[k], d.losses[k]);
-        snprintf(row + n, sizeof row - n, "\n");
-        if (duel_file_append(path, row) != 0)
+        for (k = 0; k < d.n_beaten; k++)
+            n += (size_t)snprintf(drow + n, cap - n, "%s%u:%u", k ? " " : "", d.wins[k], d.losses[k]);
+        snprintf(drow + n, cap - n, "\n");
+        bad = duel_file_append(path, drow) != 0;
+        free(drow);
+        if (bad)
             goto fail;
     }
     return duel_save_checkpoint(R);
@@ -305,6 +320,8 @@ static int duel_loop(duel_run *R)
         neat_coev_report rep;
         double t0 = duel_now(), secs;
         int err;
+        if (R->log_failed)
+            return 1; /* what was done is saved; resume continues from it */
         if (duel_stop) {
             duel_clear_bar(R);
             duel_log(R, "interrupted before generation %u", neat_coev_generation(R->coev));
@@ -338,6 +355,8 @@ static int duel_loop(duel_run *R)
                     "connections)",
                  R->cfg.generations, n, d.generation, neat_genome_hidden_count(d.genome),
                  neat_genome_enabled_count(d.genome));
+        if (R->log_failed)
+            return 1;
         if (!R->quiet)
             fprintf(stderr, "done: %u generations in %s; dominance level %u; top dominant: generation %u, %u "
                             "hidden nodes, %u connections (champions/gen-%05u.blob)\n",
@@ -397,6 +416,43 @@ static int duel_common_option(duel_run *R, int argc, char **argv, int *i, uint32
     } else {
         return 0;
     }
+    return 1;
+}
+
+/* A run directory without a checkpoint: a run that died during generation
+ * 0 may have recorded that generation's rows and blob (they are redone), but
+ * anything of a later generation means a checkpoint existed and is gone:
+ * starting over (run) or from generation 0 (resume) would discard or mix
+ * what was recorded, so such a directory is refused. 1 (what in msg), or 0. */
+static int duel_has_history(const char *dir, char *msg, size_t cap)
+{
+    char path[4200];
+    uint8_t *data;
+    size_t len, i;
+    unsigned long rows = 0, blobs = 0;
+    DIR *d;
+    struct dirent *e;
+    duel_path(path, sizeof path, dir, "generations.csv");
+    if (duel_file_read(path, SIZE_MAX, &data, &len) == 0) {
+        /* rows whose generation (the first field) is not 0 */
+        for (i = 0; i < len; i++)
+            if ((i == 0 || data[i - 1] == '\n') && data[i] >= '0' && data[i] <= '9' &&
+                !(data[i] == '0' && i + 1 < len && data[i + 1] == ','))
+                rows++;
+        free(data);
+    }
+    duel_path(path, sizeof path, dir, "champions");
+    d = opendir(path);
+    if (d != NULL) {
+        while ((e = readdir(d)) != NULL) {
+            size_t n = strlen(e->d_name);
+            blobs += n > 5 && strcmp(e->d_name + n - 5, ".blob") == 0 && strcmp(e->d_name, "gen-00000.blob") != 0;
+        }
+        closedir(d);
+    }
+    if (rows == 0 && blobs == 0)
+        return 0;
+    snprintf(msg, cap, "%lu rows of generations.csv and %lu champion blobs of generations after 0", rows, blobs);
     return 1;
 }
 
@@ -477,7 +533,13 @@ int duel_cmd_run(int argc, char **argv)
         fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
         return 2;
     }
-    /* a directory left by a run that died before its first checkpoint starts over */
+    /* a directory left by a run that died before its first checkpoint starts over; one whose checkpoint
+     * is gone but whose generations are recorded is not overwritten */
+    if (duel_has_history(R.dir, err, sizeof err)) {
+        fprintf(stderr, "duel_evolve: %s has no checkpoint.bin but holds %s: refusing to overwrite them (restore "
+                        "the checkpoint and resume, or choose another --out)\n", R.dir, err);
+        return 2;
+    }
     {
         static const char *const files[] = {"generations.csv", "dominance.csv"};
         for (i = 0; i < 2; i++) {
@@ -564,7 +626,13 @@ int duel_cmd_resume(int argc, char **argv)
             fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(errno));
             return 2;
         }
-        /* died before its first checkpoint: start from generation 0 */
+        /* died before its first checkpoint: start from generation 0; but a run that recorded
+         * generations and lost its checkpoint cannot go on */
+        if (duel_has_history(R.dir, err, sizeof err)) {
+            fprintf(stderr, "duel_evolve: %s: missing, but the run directory holds %s: cannot resume without it "
+                            "(restore it from a backup, or start a new run)\n", path, err);
+            return 2;
+        }
         e = neat_coev_create(&R.coev, &R.cfg.neat, &R.cfg.coev, R.cfg.seed, NULL);
     } else {
         e = neat_coev_load(&R.coev, buf, len, NULL, &off);

@@ -1,11 +1,10 @@
-/* duel_config.c - the run configuration's INI sections, keys, defaults, overrides and dump (parsed by Debian's inih). */
-#include <ini.h>
-#include <errno.h>
+/* duel_config.c - the run configuration's INI sections, keys, defaults, overrides and dump. */
 #include <string.h>
 
 #include "duel_config.h"
 #include "duel.h"
 #include "neat_config.h"
+#include "neat_ini.h"
 
 #define RUN_KEY(name, type, lo, hi) {#name, type, offsetof(duel_config, name), lo, hi, NULL}
 #define COEV_KEY(name, lo, hi) {#name, NEAT_CFG_U32, offsetof(neat_coev_params, name), lo, hi, NULL}
@@ -77,19 +76,10 @@ static int duel_set_in(duel_config *cfg, const char *section, const char *name, 
     return r;
 }
 
-typedef struct duel_load {
-    duel_config *cfg;
-    char msg[400];
-} duel_load;
-
-/* Debian's inih passes no line number: returning 0 makes ini_parse return
- * the line of the first error, and the message waits here until then. */
-static int duel_ini_handler(void *user, const char *section, const char *name, const char *value)
+static int duel_ini_handler(void *user, const char *section, const char *name, const char *value, char *err,
+                            size_t err_len)
 {
-    duel_load *L = (duel_load *)user;
-    if (L->msg[0])
-        return 0;
-    return duel_set_in(L->cfg, section, name, value, L->msg, sizeof L->msg) == 0;
+    return duel_set_in((duel_config *)user, section, name, value, err, err_len);
 }
 
 int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
@@ -113,24 +103,9 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
 
 int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_len)
 {
-    duel_load L;
     char msg[400];
-    int r;
-    memset(&L, 0, sizeof L);
-    L.cfg = cfg;
-    r = ini_parse(path, duel_ini_handler, &L);
-    if (r == -1) {
-        snprintf(err, err_len, "%s: cannot open: %s", path, strerror(errno));
+    if (neat_ini_parse_file(path, duel_ini_handler, cfg, err, err_len) != 0)
         return -1;
-    }
-    if (r == -2) {
-        snprintf(err, err_len, "%s: out of memory", path);
-        return -1;
-    }
-    if (r != 0) {
-        snprintf(err, err_len, "%s:%d: %s", path, r, L.msg[0] ? L.msg : "syntax error");
-        return -1;
-    }
     if (duel_config_check(cfg, msg, sizeof msg) != 0) {
         snprintf(err, err_len, "%s: %s", path, msg);
         return -1;
@@ -140,9 +115,13 @@ int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_l
 
 int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t err_len)
 {
-    char buf[256], *eq, *dot, *key, *value;
+    char buf[NEAT_INI_MAX_LINE + 1], *eq, *dot, *key, *value;
     const char *section;
-    if (strlen(assignment) >= sizeof buf || (eq = strchr(strcpy(buf, assignment), '=')) == NULL) {
+    if (strlen(assignment) >= sizeof buf) {
+        snprintf(err, err_len, "an override of %zu characters (at most %d)", strlen(assignment), NEAT_INI_MAX_LINE);
+        return -1;
+    }
+    if ((eq = strchr(strcpy(buf, assignment), '=')) == NULL) {
         snprintf(err, err_len, "'%s': expected key=value or section.key=value", assignment);
         return -1;
     }

@@ -1,4 +1,4 @@
-/* duel_files.c - atomic file replacement, whole-file reads, durable appends and CSV truncation for run directories. */
+/* duel_files.c - every file the tools write goes through here: temporary file, fsync, rename, directory sync; whole-file reads, durable appends, CSV truncation. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
@@ -27,14 +27,60 @@ static int duel_write_all(int fd, const void *data, size_t len)
     return 0;
 }
 
+/* path's directory: "." for a bare name. */
+static void duel_dir_of(const char *path, char *dir, size_t cap)
+{
+    const char *slash = strrchr(path, '/');
+    if (slash == NULL)
+        snprintf(dir, cap, ".");
+    else if (slash == path)
+        snprintf(dir, cap, "/");
+    else
+        snprintf(dir, cap, "%.*s", (int)(slash - path), path);
+}
+
+int duel_dir_sync(const char *path)
+{
+    char dir[4200];
+    int fd, r, e;
+    duel_dir_of(path, dir, sizeof dir);
+    fd = open(dir, O_RDONLY | O_DIRECTORY);
+    if (fd < 0)
+        return -1;
+    r = fsync(fd);
+    e = errno;
+    close(fd);
+    errno = e;
+    return r;
+}
+
+int duel_file_commit(const char *tmp, const char *path)
+{
+    int e;
+    if (rename(tmp, path) != 0) {
+        e = errno;
+        unlink(tmp);
+        errno = e;
+        return -1;
+    }
+    return duel_dir_sync(path);
+}
+
+static int duel_tmp_name(char *tmp, size_t cap, const char *path)
+{
+    if (snprintf(tmp, cap, "%s.tmp", path) >= (int)cap) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    return 0;
+}
+
 int duel_file_replace(const char *path, const void *data, size_t len)
 {
     char tmp[4200];
     int fd, e;
-    if (snprintf(tmp, sizeof tmp, "%s.tmp", path) >= (int)sizeof tmp) {
-        errno = ENAMETOOLONG;
+    if (duel_tmp_name(tmp, sizeof tmp, path) != 0)
         return -1;
-    }
     fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd < 0)
         return -1;
@@ -45,13 +91,55 @@ int duel_file_replace(const char *path, const void *data, size_t len)
         errno = e;
         return -2;
     }
-    if (close(fd) != 0 || rename(tmp, path) != 0) {
+    if (close(fd) != 0) {
         e = errno;
         unlink(tmp);
         errno = e;
         return -2;
     }
-    return 0;
+    return duel_file_commit(tmp, path) == 0 ? 0 : -2;
+}
+
+int duel_out_open(duel_out *o, const char *path)
+{
+    memset(o, 0, sizeof *o);
+    if (strlen(path) >= sizeof o->path || duel_tmp_name(o->tmp, sizeof o->tmp, path) != 0) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(o->path, path);
+    o->f = fopen(o->tmp, "wb");
+    return o->f != NULL ? 0 : -1;
+}
+
+int duel_out_commit(duel_out *o)
+{
+    int bad, e;
+    if (o->f == NULL) {
+        errno = EBADF;
+        return -1;
+    }
+    bad = fflush(o->f) != 0 || ferror(o->f) || fsync(fileno(o->f)) != 0;
+    e = errno;
+    if (fclose(o->f) != 0 && !bad) {
+        bad = 1;
+        e = errno;
+    }
+    o->f = NULL;
+    if (bad) {
+        unlink(o->tmp);
+        errno = e ? e : EIO;
+        return -1;
+    }
+    return duel_file_commit(o->tmp, o->path);
+}
+
+void duel_out_abort(duel_out *o)
+{
+    if (o->f != NULL)
+        fclose(o->f);
+    o->f = NULL;
+    unlink(o->tmp);
 }
 
 int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)
@@ -99,6 +187,8 @@ int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)
 
 int duel_file_append(const char *path, const char *text)
 {
+    struct stat st;
+    int created = stat(path, &st) != 0;
     int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644), e;
     if (fd < 0)
         return -1;
@@ -108,7 +198,10 @@ int duel_file_append(const char *path, const char *text)
         errno = e;
         return -1;
     }
-    return close(fd);
+    if (close(fd) != 0)
+        return -1;
+    /* a new file's name is in its directory only once the directory is synced */
+    return created ? duel_dir_sync(path) : 0;
 }
 
 int duel_csv_keep_before(const char *path, uint32_t generation)

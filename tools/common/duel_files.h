@@ -1,4 +1,4 @@
-/* duel_files.h - the file operations a run directory needs: atomic replacement, whole-file reads, CSV rows kept up to a generation. */
+/* duel_files.h - every file the tools write goes through here: temporary file, fsync, rename, directory sync; whole-file reads, durable appends, CSV truncation. */
 #ifndef DUEL_FILES_H
 #define DUEL_FILES_H
 
@@ -6,18 +6,43 @@
 #include <stdint.h>
 #include <stdio.h>
 
-/* Writes data to path through path.tmp, fsync and rename: a reader sees the
- * old file or the new one, never a mix (a path.tmp left by a killed writer
- * is taken over by the next write of path). 0; -1 (errno set) when path.tmp
- * cannot be created, -2 when writing or renaming it failed. */
+/* Every output file is written as PATH.tmp, synced, renamed over PATH, and
+ * its directory synced: a reader sees the old file or the new one, never a
+ * mix, a failure leaves PATH as it was, and a PATH reported written survives
+ * a power cut. A PATH.tmp left by a killed writer is ours: the next write of
+ * PATH takes it over. */
+
+/* Writes data to path that way. 0; -1 (errno set) when path.tmp cannot be
+ * created, -2 when writing, renaming or syncing failed. */
 int duel_file_replace(const char *path, const void *data, size_t len);
+
+/* A file written as a stream (a trace, a log), put in place only by
+ * duel_out_commit. */
+typedef struct duel_out {
+    FILE *f; /* write here */
+    char path[4096], tmp[4104];
+} duel_out;
+/* Opens path.tmp. 0, or -1 (errno set; ENAMETOOLONG for a path too long). */
+int duel_out_open(duel_out *o, const char *path);
+/* Flushes, syncs and closes the stream, renames it over path and syncs the
+ * directory. 0, or -1 (errno set; the temporary is gone, path unchanged). */
+int duel_out_commit(duel_out *o);
+/* Closes the stream and removes the temporary: path is as it was. */
+void duel_out_abort(duel_out *o);
+
+/* Renames tmp over path and syncs path's directory. 0, or -1 (errno set; tmp
+ * removed when the rename failed). */
+int duel_file_commit(const char *tmp, const char *path);
+/* fsync of the directory that holds path. 0 or -1 (errno set). */
+int duel_dir_sync(const char *path);
 
 /* The whole file, at most max bytes, in a malloc'd buffer. 0; -1 when it
  * cannot be opened (errno set; ENOENT when missing); -2 when it cannot be
  * read (errno set; EFBIG when it is larger than max). */
 int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len);
 
-/* Appends text and flushes it to the disk. 0 or -1. */
+/* Appends text and flushes it to the disk (and the directory, when this
+ * created the file). 0 or -1. */
 int duel_file_append(const char *path, const char *text);
 
 /* Keeps the header and the complete rows whose first field (a generation

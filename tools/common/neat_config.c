@@ -90,6 +90,43 @@ const char *neat_config_suggest(const char *name, const char *const *known, size
     return best_d <= 1 + strlen(name) / 3 ? best : NULL;
 }
 
+/* The only number syntax accepted: an integer is decimal digits (no sign,
+ * point, exponent or 0x: "1e1" and "0x10" are errors, not 10 and 16); a real
+ * is [+-]digits[.digits][e[+-]digits] or [+-].digits[...], so strtod's hex,
+ * "inf" and "nan" forms never reach it. */
+static int neat_config_decimal(const char *v, int integer)
+{
+    const char *p = v;
+    int digits = 0;
+    if (!integer && (*p == '+' || *p == '-'))
+        p++;
+    while (*p >= '0' && *p <= '9') {
+        p++;
+        digits++;
+    }
+    if (integer)
+        return digits > 0 && *p == '\0';
+    if (*p == '.') {
+        p++;
+        while (*p >= '0' && *p <= '9') {
+            p++;
+            digits++;
+        }
+    }
+    if (digits == 0)
+        return 0;
+    if (*p == 'e' || *p == 'E') {
+        p++;
+        if (*p == '+' || *p == '-')
+            p++;
+        if (!(*p >= '0' && *p <= '9'))
+            return 0;
+        while (*p >= '0' && *p <= '9')
+            p++;
+    }
+    return *p == '\0';
+}
+
 int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value, char *err, size_t err_len)
 {
     char *end = NULL;
@@ -124,8 +161,8 @@ int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value
     }
     errno = 0;
     d = strtod(value, &end);
-    if (end == value || *end != '\0' || errno != 0 || !isfinite(d) || d < k->min || d > k->max ||
-        (k->type == NEAT_CFG_U32 && d != floor(d))) {
+    if (!neat_config_decimal(value, k->type == NEAT_CFG_U32) || end == value || *end != '\0' || errno != 0 ||
+        !isfinite(d) || d < k->min || d > k->max || (k->type == NEAT_CFG_U32 && d != floor(d))) {
         snprintf(err, err_len, "bad value '%s' for %s: expected %s in [%g, %g]", value, k->name,
                  k->type == NEAT_CFG_U32 ? "an integer" : "a number", k->min, k->max);
         return -1;

@@ -6,6 +6,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "duel_files.h"
 #include "duel_lcm.h"
 
 #define DUEL_LCM_NOMINAL_STEP_US 10000 /* the nominal clock of recorded games: 100 steps a second */
@@ -59,7 +60,7 @@ int duel_lcm_rec_close(duel_lcm_rec *r, int keep, char *err, size_t err_len)
     bad = r->failed || fflush(r->log->f) != 0 || ferror(r->log->f) || (keep && fsync(fileno(r->log->f)) != 0);
     lcm_eventlog_destroy(r->log);
     r->log = NULL;
-    if (keep && !bad && rename(r->tmp, r->path) == 0)
+    if (keep && !bad && duel_file_commit(r->tmp, r->path) == 0)
         return 0;
     unlink(r->tmp);
     if (keep) {

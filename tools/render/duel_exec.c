@@ -1,11 +1,12 @@
 /* duel_exec.c - PATH lookup and running an external program (ffmpeg, dot) with its stderr captured, for the render commands. */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* prctl(PR_SET_PDEATHSIG): a child dies with its parent (Linux) */
 #include <errno.h>
 #include <fcntl.h>
-#include <spawn.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -59,11 +60,10 @@ static void duel_exec_keep(char *line, size_t *cur, size_t cap, const char *data
 
 int duel_exec_run(const char *path, char *const argv[], char *msg, size_t msg_len)
 {
-    posix_spawn_file_actions_t fa;
     char line[512], data[512];
     size_t cur = 0;
-    int pipefd[2], status, err;
-    pid_t pid;
+    int pipefd[2], status, errpipe[2], child_err = 0;
+    pid_t pid, parent = getpid();
     ssize_t got;
 
     if (msg_len > 0)
@@ -72,18 +72,48 @@ int duel_exec_run(const char *path, char *const argv[], char *msg, size_t msg_le
         snprintf(msg, msg_len, "cannot create a pipe: %s", strerror(errno));
         return -1;
     }
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&fa, pipefd[1], 2);
-    posix_spawn_file_actions_addclose(&fa, pipefd[0]);
-    posix_spawn_file_actions_addclose(&fa, pipefd[1]);
-    err = posix_spawn(&pid, path, &fa, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&fa);
-    close(pipefd[1]);
-    if (err) {
+    /* errpipe: close-on-exec, so it reads EOF once the program runs, or the exec's errno */
+    if (pipe(errpipe) != 0 || fcntl(errpipe[1], F_SETFD, FD_CLOEXEC) != 0) {
+        snprintf(msg, msg_len, "cannot create a pipe: %s", strerror(errno));
         close(pipefd[0]);
-        snprintf(msg, msg_len, "cannot run %s: %s", path, strerror(err));
+        close(pipefd[1]);
+        return -1;
+    }
+    pid = fork();
+    if (pid < 0) {
+        snprintf(msg, msg_len, "cannot run %s: %s", path, strerror(errno));
+        close(pipefd[0]);
+        close(pipefd[1]);
+        close(errpipe[0]);
+        close(errpipe[1]);
+        return -1;
+    }
+    if (pid == 0) {
+        /* the program dies with us: a killed duel_evolve leaves no ffmpeg behind (and if we died
+         * before the request took effect, there is no parent to wait for) */
+        int in = open("/dev/null", O_RDONLY), out = open("/dev/null", O_WRONLY), e;
+        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent || in < 0 || out < 0 ||
+            dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(pipefd[1], 2) < 0)
+            _exit(127);
+        close(pipefd[0]);
+        close(pipefd[1]);
+        close(errpipe[0]);
+        execve(path, argv, environ);
+        e = errno;
+        if (write(errpipe[1], &e, sizeof e) < 0)
+            _exit(127);
+        _exit(127);
+    }
+    close(pipefd[1]);
+    close(errpipe[1]);
+    while ((got = read(errpipe[0], &child_err, sizeof child_err)) < 0 && errno == EINTR)
+        ;
+    close(errpipe[0]);
+    if (got == (ssize_t)sizeof child_err) {
+        close(pipefd[0]);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            ;
+        snprintf(msg, msg_len, "cannot run %s: %s", path, strerror(child_err));
         return -1;
     }
     for (;;) {

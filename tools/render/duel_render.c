@@ -12,6 +12,7 @@
 #include <GL/osmesa.h>
 #include <png.h>
 
+#include "duel_files.h"
 #include "duel_render.h"
 
 static const double duel_rd_pi = 3.14159265358979323846;
@@ -51,7 +52,7 @@ int duel_render_open(duel_render *r, int size, char *err, size_t err_len)
         return -1;
     }
     r->size = size;
-    snprintf(r->tmp, sizeof r->tmp, ".%ld.tmp", (long)getpid());
+    snprintf(r->tmp, sizeof r->tmp, ".tmp"); /* duel_files.h: PATH.tmp, taken over by the next write of PATH */
     r->buf = (uint8_t *)calloc((size_t)w * (size_t)w, 4);
     r->rgb = (uint8_t *)calloc((size_t)size * (size_t)size, 3);
     if (r->buf == NULL || r->rgb == NULL) {
@@ -370,7 +371,7 @@ int duel_render_write_png(const duel_render *r, const char *path, char *err, siz
         return -1;
     }
     snprintf(tmp, len, "%s%s", path, r->tmp);
-    fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0666);
     if (fd < 0 || (f = fdopen(fd, "wb")) == NULL) {
         snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
         if (fd >= 0) {
@@ -390,7 +391,7 @@ int duel_render_write_png(const duel_render *r, const char *path, char *err, siz
         snprintf(e.msg, sizeof e.msg, "%s", strerror(errno));
         rc = -1;
     }
-    if (rc == 0 && rename(tmp, path) != 0) {
+    if (rc == 0 && duel_file_commit(tmp, path) != 0) {
         snprintf(e.msg, sizeof e.msg, "%s", strerror(errno));
         rc = -1;
     }

@@ -1,0 +1,129 @@
+/* duel_dominance.c - a run directory's dominance.csv read back: one row per dominance level, every field checked. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "duel_dominance.h"
+#include "duel_files.h"
+
+static const char duel_dom_header[] = "level,generation,population,hidden,connections,wins";
+
+/* A decimal uint32 at *p, up to a byte in stops; *p moves past it. 0 or -1. */
+static int duel_dom_u32(const char **p, const char *end, uint32_t *out)
+{
+    uint64_t v = 0;
+    const char *q = *p;
+    if (q == end || *q < '0' || *q > '9')
+        return -1;
+    while (q < end && *q >= '0' && *q <= '9') {
+        v = v * 10 + (uint64_t)(*q - '0');
+        if (v > 0xffffffffu)
+            return -1;
+        q++;
+    }
+    *p = q;
+    *out = (uint32_t)v;
+    return 0;
+}
+
+static int duel_dom_char(const char **p, const char *end, char c)
+{
+    if (*p == end || **p != c)
+        return -1;
+    (*p)++;
+    return 0;
+}
+
+int duel_dominance_parse(const char *name, const char *text, size_t len, duel_dominance_row **rows, uint32_t *n,
+                         char *err, size_t err_len)
+{
+    const char *p = text, *end = text + len;
+    duel_dominance_row *out = NULL;
+    uint32_t count = 0, cap = 0, line = 1;
+    const char *nl = (const char *)memchr(p, '\n', len);
+    *rows = NULL;
+    *n = 0;
+    if (nl == NULL || (size_t)(nl - p) != strlen(duel_dom_header) || memcmp(p, duel_dom_header, (size_t)(nl - p))) {
+        snprintf(err, err_len, "%s:1: not a dominance.csv (expected the header %s)", name, duel_dom_header);
+        return -1;
+    }
+    p = nl + 1;
+    while (p < end) {
+        duel_dominance_row r;
+        uint32_t k, w, l;
+        const char *e;
+        line++;
+        nl = (const char *)memchr(p, '\n', (size_t)(end - p));
+        if (nl == NULL)
+            break; /* a torn last row */
+        e = nl;
+        memset(&r, 0, sizeof r);
+        if (duel_dom_u32(&p, e, &r.level) || duel_dom_char(&p, e, ',') || duel_dom_u32(&p, e, &r.generation) ||
+            duel_dom_char(&p, e, ',') || p == e || (*p != 'A' && *p != 'B')) {
+            snprintf(err, err_len, "%s:%u: not a dominance row", name, line);
+            goto bad;
+        }
+        r.pop[0] = *p++;
+        if (duel_dom_char(&p, e, ',') || duel_dom_u32(&p, e, &r.hidden) || duel_dom_char(&p, e, ',') ||
+            duel_dom_u32(&p, e, &r.conns) || duel_dom_char(&p, e, ',')) {
+            snprintf(err, err_len, "%s:%u: not a dominance row", name, line);
+            goto bad;
+        }
+        /* the wins against each level below, latest first */
+        for (k = 0; k + 1 < r.level; k++)
+            if ((k && duel_dom_char(&p, e, ' ')) || duel_dom_u32(&p, e, &w) || duel_dom_char(&p, e, ':') ||
+                duel_dom_u32(&p, e, &l))
+                break;
+        if (k + 1 < r.level || p != e) {
+            snprintf(err, err_len, "%s:%u: level %u needs %u w:l scores, one per level below", name, line, r.level,
+                     r.level ? r.level - 1 : 0);
+            goto bad;
+        }
+        if (r.level != count + 1 || (count > 0 && r.generation <= out[count - 1].generation)) {
+            snprintf(err, err_len, "%s:%u: level %u of generation %u out of order (levels 1, 2, ... in increasing "
+                     "generations)", name, line, r.level, r.generation);
+            goto bad;
+        }
+        if (count == cap) {
+            duel_dominance_row *nr;
+            cap = cap ? 2 * cap : 64;
+            nr = (duel_dominance_row *)realloc(out, cap * sizeof *nr);
+            if (nr == NULL) {
+                snprintf(err, err_len, "%s: out of memory", name);
+                goto bad;
+            }
+            out = nr;
+        }
+        out[count++] = r;
+        p = nl + 1;
+    }
+    *rows = out;
+    *n = count;
+    return 0;
+bad:
+    free(out);
+    return -1;
+}
+
+int duel_dominance_read(const char *dir, duel_dominance_row **rows, uint32_t *n, char *err, size_t err_len)
+{
+    char path[4200];
+    uint8_t *data;
+    size_t len;
+    int r;
+    *rows = NULL;
+    *n = 0;
+    if (snprintf(path, sizeof path, "%s/dominance.csv", dir) >= (int)sizeof path) {
+        snprintf(err, err_len, "%.100s...: path too long", dir);
+        return -1;
+    }
+    r = duel_file_read(path, DUEL_DOMINANCE_MAX_FILE, &data, &len);
+    if (r != 0) {
+        snprintf(err, err_len, "%s: %s: %s", path, r == -1 ? "cannot open" : "cannot read", strerror(errno));
+        return -1;
+    }
+    r = duel_dominance_parse(path, (const char *)data, len, rows, n, err, err_len);
+    free(data);
+    return r;
+}
