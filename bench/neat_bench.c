@@ -203,7 +203,7 @@ static int bench_parse_u64(const char *opt, const char *s, uint64_t max, uint64_
     return 0;
 }
 
-int main(int argc, char **argv)
+static int bench_main(int argc, char **argv)
 {
     bench_cfg cfg;
     const char *task, *config = NULL;
@@ -298,4 +298,15 @@ int main(int argc, char **argv)
         return 0;
     }
     return bench_evolve(task, &cfg, quiet);
+}
+
+int main(int argc, char **argv)
+{
+    int rc = bench_main(argc, argv);
+    /* the JSON summary must have reached standard output (a full disk, a closed pipe: a failure) */
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "neat_bench: cannot write standard output: %s\n", strerror(errno));
+        return rc != 0 ? rc : 1;
+    }
+    return rc;
 }

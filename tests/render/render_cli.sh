@@ -72,6 +72,29 @@ video)
     [ "$got" -eq $(( (steps + 199) / 200 + 1 )) ] || fail "short video: $got frames"
   fi
   ;;
+video-kill)
+  # kill -9 of render --video while ffmpeg encodes: ffmpeg dies with it (it was left running), and the next
+  # render of the same video takes over the temporary file the killed one left
+  command -v ffmpeg > /dev/null || { echo "ffmpeg not installed: skipped"; exit 77; }
+  "$duel" render builtin:idle builtin:spinner --out "$tmp/k" --size 600 --every 1 --video "$tmp/k.mp4" > /dev/null &
+  rpid=$!
+  ff=""
+  for _ in $(seq 3000); do
+    ff=$(pgrep -P "$rpid" ffmpeg || true)
+    [ -n "$ff" ] && break
+    kill -0 "$rpid" 2>/dev/null || break
+    sleep 0.02
+  done
+  [ -n "$ff" ] || fail "ffmpeg never started under render --video"
+  kill -9 "$rpid"
+  wait "$rpid" 2>/dev/null || true
+  for _ in $(seq 100); do kill -0 "$ff" 2>/dev/null || break; sleep 0.02; done
+  if kill -0 "$ff" 2>/dev/null; then kill -9 "$ff"; fail "ffmpeg $ff outlived the killed render"; fi
+  [ ! -e "$tmp/k.mp4" ] || fail "a killed render left a video"
+  "$duel" render "${game[@]}" --out "$tmp/k2" --size 64 --every 50 --video "$tmp/k.mp4" > /dev/null
+  [ -s "$tmp/k.mp4" ] || fail "no video after the kill"
+  [ -z "$(find "$tmp" -name '*.tmp')" ] || fail "temporary files left: $(find "$tmp" -name '*.tmp')"
+  ;;
 lcm)
   # a game recorded as an LCM log draws the same frames, byte for byte, as the game played here
   "$duel" play "${game[@]}" --lcm-log "$tmp/game.lcm" > /dev/null

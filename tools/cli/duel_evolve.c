@@ -47,8 +47,12 @@ static const duel_command duel_commands[] = {
 static int duel_stdout_status(const char *cmd, int rc)
 {
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "duel_evolve: %s: cannot write standard output: %s\n", cmd, strerror(errno));
-        return rc != 0 ? rc : 1;
+        /* a command that failed already said why; one that wrote to a failing stdout did not */
+        int e = errno;
+        if (rc != 0 && rc != 1)
+            return rc;
+        fprintf(stderr, "duel_evolve: %s: cannot write standard output: %s\n", cmd, strerror(e ? e : EIO));
+        return 1;
     }
     return rc;
 }

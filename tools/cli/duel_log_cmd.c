@@ -83,10 +83,8 @@ static int duel_log_dump_trace(const char *path)
         duel_trace_row(stdout, &g->w[t], (const nrt_q15(*)[DUEL_N_INPUTS])g->in[t],
                        (const nrt_q15(*)[DUEL_N_OUTPUTS])g->out[t], &g->ev[t + 1]);
     duel_lcm_game_free(g);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "duel_evolve: log dump: write failed\n");
-        return 1;
-    }
+    if (fflush(stdout) != 0 || ferror(stdout))
+        return 1; /* duel_evolve.c says so */
     if (status != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;
@@ -207,10 +205,8 @@ static int duel_log_dump_channel(const char *path, const char *channel)
                      (unsigned long long)e.offset, channel, msg);
     }
     duel_lcm_reader_close(&rd);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "duel_evolve: log dump: write failed\n");
-        return 1;
-    }
+    if (fflush(stdout) != 0 || ferror(stdout))
+        return 1; /* duel_evolve.c says so */
     if (bad || rc < 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;

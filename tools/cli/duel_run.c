@@ -14,6 +14,7 @@
 #include "duel.h"
 #include "duel_cli.h"
 #include "duel_config.h"
+#include "duel_dominance.h"
 #include "duel_files.h"
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
@@ -155,7 +156,7 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
 {
     char path[4200], row[2000];
     const neat_params *np = neat_pop_params(neat_coev_pop(R->coev, 0));
-    uint32_t p, k;
+    uint32_t p;
     struct stat st;
 
     snprintf(row, sizeof row, "champions/gen-%05u.blob", rep->generation);
@@ -185,27 +186,20 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
 
     if (rep->new_dominant) {
         neat_dominant d;
-        size_t n, cap;
         char *drow;
         int bad;
         neat_coev_dominant(R->coev, rep->dominants - 1u, &d);
         duel_path(path, sizeof path, R->dir, "dominance.csv");
-        if ((stat(path, &st) != 0 || st.st_size == 0) &&
-            duel_file_append(path, "level,generation,population,hidden,connections,wins\n") != 0)
+        if ((stat(path, &st) != 0 || st.st_size == 0) && duel_file_append(path, DUEL_DOMINANCE_HEADER) != 0)
             goto fail;
-        /* one "w:l" of at most 2 x 10 digits, a colon and a space per level beaten: sized by the run */
-        cap = 128 + (size_t)d.n_beaten * 24;
-        drow = (char *)malloc(cap);
+        /* "w:l" against d(n-1), d(n-2), ..., d1: the comparisons it won, in the order played */
+        drow = duel_dominance_row_text(rep->dominants, d.generation, duel_pop_name(d.pop)[0],
+                                       neat_genome_hidden_count(d.genome), neat_genome_enabled_count(d.genome),
+                                       d.n_beaten, d.wins, d.losses);
         if (drow == NULL) {
             errno = ENOMEM;
             goto fail;
         }
-        n = (size_t)snprintf(drow, cap, "%u,%u,%s,%u,%u,", rep->dominants, d.generation, duel_pop_name(d.pop),
-                             neat_genome_hidden_count(d.genome), neat_genome_enabled_count(d.genome));
-        /* "w:l" against d(n-1), d(n-2), ..., d1: the comparisons it won, in the order played */
-        for (k = 0; k < d.n_beaten; k++)
-            n += (size_t)snprintf(drow + n, cap - n, "%s%u:%u", k ? " " : "", d.wins[k], d.losses[k]);
-        snprintf(drow + n, cap - n, "\n");
         bad = duel_file_append(path, drow) != 0;
         free(drow);
         if (bad)

@@ -7,7 +7,6 @@
 #include "duel_dominance.h"
 #include "duel_files.h"
 
-static const char duel_dom_header[] = "level,generation,population,hidden,connections,wins";
 
 /* A decimal uint32 at *p, up to a byte in stops; *p moves past it. 0 or -1. */
 static int duel_dom_u32(const char **p, const char *end, uint32_t *out)
@@ -44,8 +43,10 @@ int duel_dominance_parse(const char *name, const char *text, size_t len, duel_do
     const char *nl = (const char *)memchr(p, '\n', len);
     *rows = NULL;
     *n = 0;
-    if (nl == NULL || (size_t)(nl - p) != strlen(duel_dom_header) || memcmp(p, duel_dom_header, (size_t)(nl - p))) {
-        snprintf(err, err_len, "%s:1: not a dominance.csv (expected the header %s)", name, duel_dom_header);
+    if (nl == NULL || (size_t)(nl - p) + 1 != strlen(DUEL_DOMINANCE_HEADER) ||
+        memcmp(p, DUEL_DOMINANCE_HEADER, (size_t)(nl - p)) != 0) {
+        snprintf(err, err_len, "%s:1: not a dominance.csv (expected the header %.*s)", name,
+                 (int)strlen(DUEL_DOMINANCE_HEADER) - 1, DUEL_DOMINANCE_HEADER);
         return -1;
     }
     p = nl + 1;
@@ -104,6 +105,22 @@ int duel_dominance_parse(const char *name, const char *text, size_t len, duel_do
 bad:
     free(out);
     return -1;
+}
+
+char *duel_dominance_row_text(uint32_t level, uint32_t generation, char pop, uint32_t hidden, uint32_t conns,
+                              uint32_t n_beaten, const uint16_t *wins, const uint16_t *losses)
+{
+    /* at most 5 x 10 digits and commas, then per level "65535:65535 " */
+    size_t cap = 64 + (size_t)n_beaten * 12, n;
+    uint32_t k;
+    char *row = (char *)malloc(cap);
+    if (row == NULL)
+        return NULL;
+    n = (size_t)snprintf(row, cap, "%u,%u,%c,%u,%u,", level, generation, pop, hidden, conns);
+    for (k = 0; k < n_beaten; k++)
+        n += (size_t)snprintf(row + n, cap - n, "%s%u:%u", k ? " " : "", (unsigned)wins[k], (unsigned)losses[k]);
+    snprintf(row + n, cap - n, "\n");
+    return row;
 }
 
 int duel_dominance_read(const char *dir, duel_dominance_row **rows, uint32_t *n, char *err, size_t err_len)

@@ -12,6 +12,7 @@ typedef struct duel_dominance_row {
     uint32_t hidden, conns;
 } duel_dominance_row;
 
+#define DUEL_DOMINANCE_HEADER "level,generation,population,hidden,connections,wins\n"
 #define DUEL_DOMINANCE_MAX_FILE (256u << 20) /* a 500-generation run writes about 30 KB */
 
 /* Parses the text of a dominance.csv (name for messages): the header, then
@@ -23,6 +24,12 @@ typedef struct duel_dominance_row {
  * "NAME:LINE: problem" in err. */
 int duel_dominance_parse(const char *name, const char *text, size_t len, duel_dominance_row **rows, uint32_t *n,
                          char *err, size_t err_len);
+
+/* One row of dominance.csv, newline included, in a malloc'd string (NULL when
+ * out of memory): the wins field lists "w:l" for each of the n_beaten levels
+ * below, latest first, however many there are. */
+char *duel_dominance_row_text(uint32_t level, uint32_t generation, char pop, uint32_t hidden, uint32_t conns,
+                              uint32_t n_beaten, const uint16_t *wins, const uint16_t *losses);
 
 /* DIR/dominance.csv read and parsed; err names the file. 0 or -1. */
 int duel_dominance_read(const char *dir, duel_dominance_row **rows, uint32_t *n, char *err, size_t err_len);

@@ -1,0 +1,112 @@
+/* test_dominance.c - dominance.csv rows of any length written and read back, and malformed files refused with their line. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "duel_dominance.h"
+
+/* A dominance.csv of n levels, level k beating the k - 1 below it. */
+static char *td_file(uint32_t n, size_t *len)
+{
+    size_t cap = 1 << 16, used;
+    uint32_t k, j;
+    char *text = (char *)malloc(cap);
+    uint16_t *w = (uint16_t *)malloc((n + 1) * sizeof *w), *l = (uint16_t *)malloc((n + 1) * sizeof *l);
+    assert_non_null(text);
+    strcpy(text, DUEL_DOMINANCE_HEADER);
+    used = strlen(text);
+    for (k = 1; k <= n; k++) {
+        char *row;
+        size_t rl;
+        for (j = 0; j + 1 < k; j++) {
+            w[j] = (uint16_t)(200 + j % 88);
+            l[j] = (uint16_t)(j % 100);
+        }
+        row = duel_dominance_row_text(k, 3 * k, k % 2 ? 'A' : 'B', k % 7, 39 + k, k - 1, w, l);
+        assert_non_null(row);
+        rl = strlen(row);
+        while (used + rl + 1 > cap) {
+            cap *= 2;
+            text = (char *)realloc(text, cap);
+            assert_non_null(text);
+        }
+        memcpy(text + used, row, rl + 1);
+        used += rl;
+        free(row);
+    }
+    free(w);
+    free(l);
+    *len = used;
+    return text;
+}
+
+/* 1,000 levels: the top row holds 999 scores (about 7 KB; the writer once cut rows at 2,000 characters) */
+static void test_long_rows(void **state)
+{
+    size_t len;
+    char *text = td_file(1000, &len), err[300];
+    duel_dominance_row *rows;
+    uint32_t n;
+    (void)state;
+    {
+        const char *last = text + len - 1; /* the final newline */
+        while (last > text && last[-1] != '\n')
+            last--;
+        assert_true(text + len - last > 6000);
+    }
+    assert_int_equal(duel_dominance_parse("d.csv", text, len, &rows, &n, err, sizeof err), 0);
+    assert_int_equal(n, 1000);
+    assert_int_equal(rows[999].level, 1000);
+    assert_int_equal(rows[999].generation, 3000);
+    assert_string_equal(rows[999].pop, "B");
+    assert_int_equal(rows[999].conns, 1039);
+    free(rows);
+    /* a torn last row (the writer died) is not a row */
+    assert_int_equal(duel_dominance_parse("d.csv", text, len - 5, &rows, &n, err, sizeof err), 0);
+    assert_int_equal(n, 999);
+    free(rows);
+    free(text);
+}
+
+static void td_bad(const char *text, const char *want)
+{
+    duel_dominance_row *rows = (duel_dominance_row *)1;
+    uint32_t n = 7;
+    char err[300];
+    assert_int_equal(duel_dominance_parse("d.csv", text, strlen(text), &rows, &n, err, sizeof err), -1);
+    if (strstr(err, want) == NULL)
+        fail_msg("'%s': got '%s', expected '%s'", text, err, want);
+    assert_null(rows);
+    assert_int_equal(n, 0);
+}
+
+static void test_refused(void **state)
+{
+    (void)state;
+    td_bad("", "d.csv:1: not a dominance.csv");
+    td_bad("level,generation\n", "d.csv:1: not a dominance.csv");
+    td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n2,5,C,0,39,3:1\n", "d.csv:3: not a dominance row");
+    td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n2,5,B,0,39,\n", "d.csv:3: level 2 needs 1 w:l scores");
+    td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n2,5,B,0,39,3:1 4:4\n", "d.csv:3: level 2 needs 1");
+    td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n3,5,B,0,39,3:1 4:4\n", "d.csv:3: level 3 of generation 5 out of order");
+    td_bad(DUEL_DOMINANCE_HEADER "1,4,A,0,39,\n2,4,B,0,39,3:1\n", "d.csv:3: level 2 of generation 4 out of order");
+    td_bad(DUEL_DOMINANCE_HEADER "1,99999999999,A,0,39,\n", "d.csv:2: not a dominance row");
+    td_bad(DUEL_DOMINANCE_HEADER "1,-1,A,0,39,\n", "d.csv:2: not a dominance row");
+    td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39\n", "d.csv:2: not a dominance row");
+    td_bad(DUEL_DOMINANCE_HEADER "0,0,A,0,39,\n", "d.csv:2: level 0");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_long_rows),
+        cmocka_unit_test(test_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
