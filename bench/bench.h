@@ -2,7 +2,9 @@
 #ifndef BENCH_H
 #define BENCH_H
 
+#include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "neat.h"
 
@@ -19,6 +21,13 @@ typedef struct bench_cfg {
     uint32_t generalization_min;/* 200 of the 625 starts */
     int verbose;                /* one line per generation on stderr */
 } bench_cfg;
+
+/* bench_config.c: FILE (or text named name) over cfg, its [bench] and [neat]
+ * keys; 0, or -1 with one line on stderr (load) or in err (load_text). */
+int bench_config_load(bench_cfg *cfg, const char *path);
+int bench_config_load_text(bench_cfg *cfg, const char *name, const char *text, size_t len, char *err, size_t err_len);
+/* The [bench] keys as "key = value" lines. */
+void bench_config_dump(FILE *out, const bench_cfg *cfg);
 
 typedef struct bench_result {
     int solved;

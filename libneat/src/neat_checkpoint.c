@@ -223,6 +223,10 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
         pop->iv.next_node = neat_get_u32(&r);
         pop->next_species_id = neat_get_u32(&r);
         pop->since_pop_improved = neat_get_u32(&r);
+        if (!r.err && (pop->generation > NEAT_COUNTER_MAX || pop->iv.next_innov > NEAT_COUNTER_MAX ||
+                       pop->iv.next_node > NEAT_COUNTER_MAX || pop->next_species_id > NEAT_COUNTER_MAX ||
+                       pop->since_pop_improved > pop->generation))
+            neat_fail(&r, NEAT_E_FORMAT); /* counters past their limit: the run could not go on */
         pop->delta_t = neat_get_f64(&r);
         n = neat_get_count(&r, 25);
         if (!r.err && neat_mem_reserve(&pop->a, (void **)&pop->iv.list, &pop->iv.cap, n, sizeof(neat_innov)))

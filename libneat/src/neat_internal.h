@@ -10,6 +10,14 @@ void neat_mem_free(const neat_alloc *a, void *ptr, size_t size);
 /* grows *arr (elem bytes each) to hold at least need elements; 0 or NEAT_E_NOMEM */
 int neat_mem_reserve(const neat_alloc *a, void **arr, uint32_t *cap, uint32_t need, size_t elem);
 
+/* The largest value of every counter a run keeps (node ids, innovation
+ * numbers, species ids, generations): a checkpoint holding more is refused,
+ * and an epoch that could pass it is refused (NEAT_E_TOOBIG) before it
+ * changes anything. 2^31 - 1 leaves room for an epoch's worth of ids above
+ * it (at most 3 innovations, one node and one species per genome), so no
+ * counter ever wraps; a run needs millions of generations to get there. */
+#define NEAT_COUNTER_MAX 0x7fffffffu
+
 /* ---- innovation list of the current generation (neat_innov.c) ---- */
 enum { NEAT_INNOV_CONN = 0, NEAT_INNOV_NODE = 1 };
 typedef struct neat_innov {

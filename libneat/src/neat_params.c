@@ -52,25 +52,44 @@ static int neat_prob_ok(double x)
     return x >= 0.0 && x <= 1.0;
 }
 
+/* Upper bounds of the parameters that have no natural one, so that a value
+ * read from a file can neither overflow arithmetic nor stall an epoch (the
+ * same ranges as the tools' INI keys, tools/common/neat_config.c). */
+#define NEAT_PARAM_BIG 1e9          /* c1..c3, delta_t and its step and floor */
+#define NEAT_PARAM_MAX_POP 1000000u /* pop_size, target_species, elitism_min_size */
+#define NEAT_PARAM_MAX_AGE 1000000000u /* dropoff_age, pop_stagnation (generations) */
+#define NEAT_PARAM_MAX_TRIES 1000u     /* add_conn_tries: each try costs a look through a genome (C++ uses 20) */
+
 int neat_params_check(const neat_params *p, const char **field)
 {
     const char *bad = NULL;
     if (p == NULL)
         return NEAT_E_ARG;
-    if (p->pop_size < 2 || p->pop_size > 1000000)
+    if (p->pop_size < 2 || p->pop_size > NEAT_PARAM_MAX_POP)
         bad = "pop_size";
     else if (p->n_outputs < 1 || p->n_inputs + p->n_outputs + 1 > NRT_MAX_NODES)
         bad = "n_inputs/n_outputs";
     else if (p->mode < NEAT_MODE_COMPLEXIFY || p->mode > NEAT_MODE_SIMPLIFY)
         bad = "mode";
-    else if (!(p->c1 >= 0) || !(p->c2 >= 0) || !(p->c3 >= 0) || !isfinite(p->c1 + p->c2 + p->c3))
+    else if (!(p->c1 >= 0 && p->c1 <= NEAT_PARAM_BIG) || !(p->c2 >= 0 && p->c2 <= NEAT_PARAM_BIG) ||
+             !(p->c3 >= 0 && p->c3 <= NEAT_PARAM_BIG))
         bad = "c1/c2/c3";
-    else if (!(p->delta_t > 0) || !isfinite(p->delta_t))
+    else if (p->normalize_by_size != 0 && p->normalize_by_size != 1)
+        bad = "normalize_by_size";
+    else if (!(p->delta_t > 0 && p->delta_t <= NEAT_PARAM_BIG))
         bad = "delta_t";
-    else if (!(p->delta_t_step >= 0) || !isfinite(p->delta_t_step))
+    else if (!(p->delta_t_step >= 0 && p->delta_t_step <= NEAT_PARAM_BIG))
         bad = "delta_t_step";
-    else if (!(p->delta_t_min > 0) || !isfinite(p->delta_t_min))
+    else if (!(p->delta_t_min > 0 && p->delta_t_min <= NEAT_PARAM_BIG))
         bad = "delta_t_min";
+    else if (p->target_species > NEAT_PARAM_MAX_POP)
+        bad = "target_species";
+    else if (p->elitism_min_size > NEAT_PARAM_MAX_POP)
+        bad = "elitism_min_size";
+    else if (p->dropoff_age > NEAT_PARAM_MAX_AGE)
+        bad = "dropoff_age";
+    else if (p->pop_stagnation > NEAT_PARAM_MAX_AGE)
+        bad = "pop_stagnation";
     else if (!(p->survival_fraction > 0) || p->survival_fraction > 1)
         bad = "survival_fraction";
     else if (p->stagnation_rule < NEAT_STAGNATION_OLDEST_WORST || p->stagnation_rule > NEAT_STAGNATION_IMPROVEMENT)
@@ -93,7 +112,7 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "weight_mut_prob";
     else if (!neat_prob_ok(p->weight_perturb_prob))
         bad = "weight_perturb_prob";
-    else if (!(p->weight_perturb_power >= 0) || !isfinite(p->weight_perturb_power))
+    else if (!(p->weight_perturb_power >= 0 && p->weight_perturb_power <= 1000))
         bad = "weight_perturb_power";
     else if (!(p->weight_max > 0) || p->weight_max > 8.0)
         bad = "weight_max";
@@ -105,6 +124,10 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "add_conn_prob";
     else if (!neat_prob_ok(p->add_node_prob) || p->add_node_prob + p->add_conn_prob > 1.0)
         bad = "add_node_prob";
+    else if (p->add_conn_tries > NEAT_PARAM_MAX_TRIES)
+        bad = "add_conn_tries";
+    else if (p->allow_recurrent != 0 && p->allow_recurrent != 1)
+        bad = "allow_recurrent";
     else if (p->max_nodes < p->n_inputs + p->n_outputs + 1 || p->max_nodes > NRT_MAX_NODES)
         bad = "max_nodes";
     if (field != NULL)

@@ -168,6 +168,11 @@ int neat_pop_epoch(neat_pop *pop)
 
     if (pop == NULL)
         return NEAT_E_ARG;
+    /* an epoch creates at most 3 innovations, 1 node and 1 species per genome */
+    if (pop->generation >= NEAT_COUNTER_MAX || pop->iv.next_innov > NEAT_COUNTER_MAX - 3u * pop->p.pop_size ||
+        pop->iv.next_node > NEAT_COUNTER_MAX - pop->p.pop_size ||
+        pop->next_species_id > NEAT_COUNTER_MAX - pop->p.pop_size)
+        return NEAT_E_TOOBIG;
     for (i = 0; i < pop->p.pop_size; i++) {
         if (!pop->genomes[i].has_fitness) {
             pop->err_index = i;

@@ -1,4 +1,4 @@
-/* make_corpus.c - writes the fuzz_blob seed corpus (valid blobs of several shapes and a few invalid ones) into a directory. */
+/* make_corpus.c - writes the fuzz_blob seed corpus (valid blobs of several shapes and a few invalid ones), and with a second directory the fuzz_pop one (small population checkpoints). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,6 +84,45 @@ static void mc_fix_crc(uint8_t *b, size_t len)
     b[NRT_OFF_CRC + 3] = (uint8_t)(crc >> 24);
 }
 
+/* Population checkpoints: 2 inputs, 1 output, 12 genomes, at generation 0
+ * and after a few epochs (grown networks, several species), in each mode. */
+static int mc_pops(const char *dir)
+{
+    static const int modes[] = {NEAT_MODE_COMPLEXIFY, NEAT_MODE_FIXED, NEAT_MODE_SIMPLIFY};
+    int err = 0, m;
+    for (m = 0; m < 3 && !err; m++) {
+        neat_params p = neat_params_default();
+        neat_pop *pop;
+        uint8_t *buf;
+        size_t len;
+        uint32_t e, i;
+        char name[64];
+        p.pop_size = 12;
+        p.n_inputs = 2;
+        p.n_outputs = 1;
+        p.mode = modes[m];
+        p.add_node_prob = 0.2;
+        p.add_conn_prob = 0.3;
+        err = neat_pop_create(&pop, &p, NULL, 5u + (uint32_t)m, NULL);
+        for (e = 0; e < 6 && !err; e++) {
+            if (e == 0 || e == 5) {
+                err = neat_pop_save(pop, &buf, &len);
+                snprintf(name, sizeof name, "pop-mode%d-gen%u.bin", m, e);
+                if (!err) {
+                    err = mc_write(dir, name, buf, len);
+                    neat_pop_buf_free(pop, buf, len);
+                }
+            }
+            for (i = 0; i < neat_pop_size(pop) && !err; i++)
+                err = neat_pop_set_fitness(pop, i, (double)(i % 5));
+            if (!err)
+                err = neat_pop_epoch(pop);
+        }
+        neat_pop_free(pop);
+    }
+    return err ? -1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
@@ -161,5 +200,9 @@ int main(int argc, char **argv)
     /* truncated: the last connection cut in half */
     err |= mc_write(dir, "truncated.blob", mc_buf, len - 2);
 
+    if (argc > 2 && mc_pops(argv[2]) != 0) {
+        fprintf(stderr, "make_corpus: the population checkpoints failed\n");
+        return 1;
+    }
     return err ? 1 : 0;
 }

@@ -69,7 +69,7 @@ static void hm_state_head(hm_buf *b)
 
 int hostile_count(void)
 {
-    return 11;
+    return 13;
 }
 
 int hostile_get(int i, hostile_msg *m)
@@ -155,6 +155,18 @@ int hostile_get(int i, hostile_msg *m)
         hm_string(&b, 2, "w", 2);
         hm_string(&b, 2, "e", 2);
         hm_zeros(&b, 1000);
+        break;
+    case 11: /* a state message that ends before its names begin (found by fuzz_lcm_log) */
+        m->name = "state-cut-head";
+        m->channel = "DUEL_STATE";
+        hm_state_head(&b);
+        b.n -= 5;
+        break;
+    case 12: /* a motor message that ends inside its outputs */
+        m->name = "motor-cut-head";
+        m->channel = "DUEL_MOTOR_WEST";
+        hm_motor_head(&b, 0, 4);
+        b.n -= 20;
         break;
     default:
         return -1;

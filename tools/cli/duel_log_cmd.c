@@ -29,7 +29,8 @@ static int duel_log_info(const char *path)
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;
     }
-    qsort(g->channels, g->n_channels, sizeof *g->channels, duel_log_cmp_channel);
+    if (g->n_channels > 1) /* qsort of NULL, even of nothing, is undefined */
+        qsort(g->channels, g->n_channels, sizeof *g->channels, duel_log_cmp_channel);
     printf("file: %s\n", path);
     printf("size: %llu bytes, %llu events%s\n", (unsigned long long)g->size, (unsigned long long)g->events,
            g->truncated ? " before a truncated or corrupt one" : "");

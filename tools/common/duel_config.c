@@ -113,6 +113,19 @@ int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_l
     return 0;
 }
 
+int duel_config_load_text(duel_config *cfg, const char *name, const char *text, size_t len, char *err,
+                          size_t err_len)
+{
+    char msg[400];
+    if (neat_ini_parse_text(name, text, len, duel_ini_handler, cfg, err, err_len) != 0)
+        return -1;
+    if (duel_config_check(cfg, msg, sizeof msg) != 0) {
+        snprintf(err, err_len, "%s: %s", name, msg);
+        return -1;
+    }
+    return 0;
+}
+
 int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t err_len)
 {
     char buf[NEAT_INI_MAX_LINE + 1], *eq, *dot, *key, *value;

@@ -23,6 +23,9 @@ void duel_config_default(duel_config *cfg);
  * and line ("FILE:LINE: unknown key 'x' (did you mean 'y'?)"); nothing of
  * cfg is to be used then. */
 int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_len);
+/* The same from len bytes of text, named name in the messages. */
+int duel_config_load_text(duel_config *cfg, const char *name, const char *text, size_t len, char *err,
+                          size_t err_len);
 
 /* One override, "key=value" or "section.key=value" (a bare key must name
  * one key of one section). -1 with a message in err. */

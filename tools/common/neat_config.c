@@ -45,7 +45,7 @@ static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(weight_max, NEAT_CFG_F64, 1e-9, 8),
     NEAT_KEY(add_conn_prob, NEAT_CFG_F64, 0, 1),
     NEAT_KEY(add_node_prob, NEAT_CFG_F64, 0, 1),
-    NEAT_KEY(add_conn_tries, NEAT_CFG_U32, 0, 1000000),
+    NEAT_KEY(add_conn_tries, NEAT_CFG_U32, 0, 1000),
     NEAT_KEY(allow_recurrent, NEAT_CFG_BOOL, 0, 1),
     NEAT_KEY(max_nodes, NEAT_CFG_U32, 2, 256),
 };

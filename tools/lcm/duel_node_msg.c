@@ -62,6 +62,10 @@ static int duel_msg_layout(const uint8_t *p, size_t len, size_t head, int n_stri
                  (unsigned)DUEL_MSG_MAX);
         return DUEL_NODE_E_MALFORMED;
     }
+    if (len < head) {
+        snprintf(msg, msg_len, "a %zu-byte %s, shorter than its %zu fixed bytes before the strings", len, type, head);
+        return DUEL_NODE_E_MALFORMED;
+    }
     for (i = 0; i < n_strings; i++) {
         int32_t n;
         if (len - off < 4) {

@@ -1,0 +1,54 @@
+/* fuzz_rundir.c - libFuzzer harness: any bytes as a run directory's dominance.csv (the ladder and compare read it) and as a generations.csv cut back on resume, which must stay a prefix that ends at a row. */
+#define _POSIX_C_SOURCE 200809L
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "duel_dominance.h"
+#include "duel_files.h"
+
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+static char fr_path[64];
+
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    (void)argc;
+    (void)argv;
+    snprintf(fr_path, sizeof fr_path, "/tmp/fuzz_rundir.%ld.csv", (long)getpid());
+    return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    duel_dominance_row *rows;
+    uint32_t n, k;
+    char err[400];
+    uint8_t *back;
+    size_t len;
+    FILE *f;
+    if (duel_dominance_parse("d.csv", (const char *)data, size, &rows, &n, err, sizeof err) == 0) {
+        for (k = 0; k < n; k++)
+            if (rows[k].level != k + 1 || (rows[k].pop[0] != 'A' && rows[k].pop[0] != 'B'))
+                __builtin_trap();
+        free(rows);
+    } else if (strncmp(err, "d.csv", 5) != 0 || rows != NULL || n != 0) {
+        __builtin_trap();
+    }
+    f = fopen(fr_path, "wb");
+    if (f == NULL || fwrite(data, 1, size, f) != size || fclose(f) != 0)
+        abort();
+    if (duel_csv_keep_before(fr_path, size ? data[0] % 8u : 0u) == 0) {
+        if (duel_file_read(fr_path, size + 1, &back, &len) != 0)
+            __builtin_trap();
+        if (len > size || memcmp(back, data, len) != 0 || (len > 0 && back[len - 1] != '\n'))
+            __builtin_trap();
+        free(back);
+    }
+    unlink(fr_path);
+    return 0;
+}
