@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# fuzz.sh SECONDS [FUZZ_BUILD_DIR] - every libFuzzer harness for SECONDS each on a copy of its seed corpus; prints each
-# one's executions, coverage and crashes and exits 1 on the first crash (its input is kept in build-fuzz/crashes/).
+# fuzz.sh SECONDS [FUZZ_BUILD_DIR [HARNESS...]] - every libFuzzer harness (or those named: blob pop coev ini lcm_log
+# lcm_msg rundir) for SECONDS each on a copy of its seed corpus; prints each one's executions, coverage and crashes,
+# and exits 1 if any crashed, hung or leaked (the input is kept in FUZZ_BUILD_DIR/crashes/).
 set -euo pipefail
-secs=${1:?usage: scripts/fuzz.sh SECONDS [FUZZ_BUILD_DIR]}
+secs=${1:?usage: scripts/fuzz.sh SECONDS [FUZZ_BUILD_DIR [HARNESS...]]}
 root=$(cd "$(dirname "$0")/.." && pwd)
 fuzz=$(realpath "${2:-$root/build-fuzz}")
+shift $(( $# < 2 ? $# : 2 ))
+harnesses=${*:-blob pop coev ini lcm_log lcm_msg rundir}
 crashes=$fuzz/crashes
 mkdir -p "$crashes"
 status=0
-printf '%-14s %10s %8s %8s %s\n' harness execs cov ft result
-for h in blob pop coev ini lcm_log lcm_msg rundir; do
+printf '%-9s %8s %12s %6s %6s %7s %s\n' harness seconds execs cov ft corpus result
+for h in $harnesses; do
   corpus=$(mktemp -d)
   cp "$root/tests/fuzz/corpus/$h/"* "$corpus"/
   rc=0
@@ -17,11 +20,12 @@ for h in blob pop coev ini lcm_log lcm_msg rundir; do
   # -close_fd_mask=3: what the code under test prints is dropped, libFuzzer's and the sanitizers' reports are kept
   "$fuzz/tests/fuzz_$h" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -close_fd_mask=3 \
     -artifact_prefix="$crashes/$h-" "$corpus" > "$fuzz/fuzz_$h.log" 2>&1 || rc=$?
+  corp=$(find "$corpus" -type f | wc -l)
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$fuzz/fuzz_$h.log" | tail -1)
   cov=$({ grep -o 'cov: [0-9]*' "$fuzz/fuzz_$h.log" || true; } | tail -1 | cut -d' ' -f2)
   ft=$({ grep -o 'ft: [0-9]*' "$fuzz/fuzz_$h.log" || true; } | tail -1 | cut -d' ' -f2)
   if [ "$rc" -eq 0 ]; then result="0 crashes"; else result="FAILED (exit $rc): see $fuzz/fuzz_$h.log"; status=1; fi
-  printf '%-14s %10s %8s %8s %s\n' "$h" "${execs:-?}" "${cov:-?}" "${ft:-?}" "$result"
+  printf '%-9s %8s %12s %6s %6s %7s %s\n' "$h" "$secs" "${execs:-?}" "${cov:-?}" "${ft:-?}" "$corp" "$result"
   [ "$rc" -eq 0 ] || grep -m3 -E "ERROR|SUMMARY|ALARM|deadly" "$fuzz/fuzz_$h.log" || true
   rm -rf "$corpus"
 done

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The whole test suite: unit tests (normal and ASan+UBSan builds), the blob fuzzer,
+# The whole test suite: unit tests (normal and ASan+UBSan builds), every decoder's fuzzer,
 # the Cortex-M0+ cross build of the runtime with its sizes, the firmware figures under QEMU, and a
 # short benchmark smoke run.
 set -euo pipefail
@@ -58,13 +58,10 @@ echo "== firmware: the runtime on Cortex-M0+, RAM, instructions per step under Q
 # (the QEMU identity tests themselves are in ctest: tests/firmware)
 ./scripts/firmware_figures.sh build
 
-echo "== fuzzing the blob loader (libFuzzer, 60 s)"
+echo "== fuzzing every decoder (libFuzzer, 30 s each; scripts/fuzz.sh SECONDS for a longer campaign)"
 CC=clang cmake -S . -B build-fuzz -G Ninja -DNEAT_FUZZ=ON -DNEAT_TESTS=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-ninja -C build-fuzz fuzz_blob
-corpus=$(mktemp -d)
-cp tests/fuzz/corpus/* "$corpus"/
-./build-fuzz/tests/fuzz_blob -max_total_time=60 -print_final_stats=1 "$corpus" 2>&1 | tail -5
-rm -rf "$corpus"
+ninja -C build-fuzz fuzzers
+./scripts/fuzz.sh 30 build-fuzz
 
 echo "== benchmark smoke run"
 ./build/bin/neat_bench xor --runs 10 --quiet | tail -1
