@@ -80,6 +80,13 @@ int duel_lcm_reader_next(duel_lcm_reader *r, duel_lcm_event *ev, char *err, size
                  (unsigned long long)r->offset, (unsigned long)clen, (unsigned long)dlen);
         return -1;
     }
+    if ((uint64_t)DUEL_LCM_HEADER + clen + dlen > r->size - r->offset) {
+        /* the lengths claim more than the file holds: nothing is allocated for them */
+        snprintf(err, err_len, "%s: offset %llu: truncated event (%llu of %lu bytes after its header)", r->path,
+                 (unsigned long long)r->offset, (unsigned long long)(r->size - r->offset - DUEL_LCM_HEADER),
+                 (unsigned long)clen + dlen);
+        return -1;
+    }
     need = (size_t)clen + 1 + dlen;
     if (need > r->cap) {
         uint8_t *nb = (uint8_t *)realloc(r->buf, need);
