@@ -10,7 +10,11 @@ c=$root/tests/fuzz/corpus
 duel=$build/bin/duel_evolve
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for d in blob pop coev ini lcm_log lcm_msg rundir; do rm -rf "${c:?}/$d"; mkdir -p "$c/$d"; done
+# inputs that once crashed a harness (regress-*) are kept
+for d in blob pop coev ini lcm_log lcm_msg rundir; do
+  mkdir -p "$c/$d"
+  find "$c/$d" -type f ! -name 'regress-*' -delete
+done
 
 "$fuzz/tests/make_corpus" "$c/blob" "$c/pop" > /dev/null
 

@@ -34,7 +34,8 @@ static int duel_log_info(const char *path)
     printf("file: %s\n", path);
     printf("size: %llu bytes, %llu events%s\n", (unsigned long long)g->size, (unsigned long long)g->events,
            g->truncated ? " before a truncated or corrupt one" : "");
-    printf("duration: %.6f s (first to last event)\n", (double)(g->last_utime - g->first_utime) / 1e6);
+    /* as doubles: a crafted log's timestamps may be any int64, whose difference overflows */
+    printf("duration: %.6f s (first to last event)\n", ((double)g->last_utime - (double)g->first_utime) / 1e6);
     for (i = 0; i < g->n_channels; i++)
         printf("channel %s: %llu messages\n", g->channels[i].name, (unsigned long long)g->channels[i].count);
     if (g->started) {
