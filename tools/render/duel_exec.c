@@ -95,6 +95,8 @@ int duel_exec_run(const char *path, char *const argv[], char *msg, size_t msg_le
         if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent || in < 0 || out < 0 ||
             dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(pipefd[1], 2) < 0)
             _exit(127);
+        close(in);
+        close(out);
         close(pipefd[0]);
         close(pipefd[1]);
         close(errpipe[0]);
