@@ -16,12 +16,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 static char fl_path[64];
 
+static void fl_cleanup(void)
+{
+    unlink(fl_path);
+}
+
 int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
     (void)argc;
     (void)argv;
     /* the commands print: run with -close_fd_mask=3 (scripts/fuzz.sh), libFuzzer keeps its own output */
     snprintf(fl_path, sizeof fl_path, "/tmp/fuzz_lcm_log.%ld.lcm", (long)getpid());
+    atexit(fl_cleanup);
     return 0;
 }
 
