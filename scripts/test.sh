@@ -55,7 +55,7 @@ fi
 echo "duelsim links no floating-point helper"
 
 echo "== firmware: the runtime on Cortex-M0+, RAM, instructions per step under QEMU (docs/firmware.md)"
-# (the QEMU identity tests themselves are in ctest: tests/firmware)
+# (the QEMU identity tests themselves are in ctest: examples/firmware/test)
 ./scripts/firmware_figures.sh build
 
 echo "== fuzzing every decoder (libFuzzer, 30 s each; scripts/fuzz.sh SECONDS for a longer campaign)"

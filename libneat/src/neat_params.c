@@ -67,7 +67,8 @@ int neat_params_check(const neat_params *p, const char **field)
         return NEAT_E_ARG;
     if (p->pop_size < 2 || p->pop_size > NEAT_PARAM_MAX_POP)
         bad = "pop_size";
-    else if (p->n_outputs < 1 || p->n_inputs + p->n_outputs + 1 > NRT_MAX_NODES)
+    else if (p->n_outputs < 1 || p->n_inputs >= NRT_MAX_NODES || p->n_outputs >= NRT_MAX_NODES ||
+             p->n_inputs + p->n_outputs + 1 > NRT_MAX_NODES) /* each bounded first: the sum cannot wrap */
         bad = "n_inputs/n_outputs";
     else if (p->mode < NEAT_MODE_COMPLEXIFY || p->mode > NEAT_MODE_SIMPLIFY)
         bad = "mode";

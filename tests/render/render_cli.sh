@@ -88,8 +88,10 @@ video-kill)
   [ -n "$ff" ] || fail "ffmpeg never started under render --video"
   kill -9 "$rpid"
   wait "$rpid" 2>/dev/null || true
-  for _ in $(seq 100); do kill -0 "$ff" 2>/dev/null || break; sleep 0.02; done
-  if kill -0 "$ff" 2>/dev/null; then kill -9 "$ff"; fail "ffmpeg $ff outlived the killed render"; fi
+  # alive: the process exists and is no zombie (an orphan nobody reaps yet is dead all the same)
+  alive() { [ -r "/proc/$1/stat" ] && [ "$(sed 's/.*) \(.\).*/\1/' "/proc/$1/stat" 2>/dev/null)" != Z ]; }
+  for _ in $(seq 100); do alive "$ff" || break; sleep 0.02; done
+  if alive "$ff"; then kill -9 "$ff"; fail "ffmpeg $ff outlived the killed render"; fi
   [ ! -e "$tmp/k.mp4" ] || fail "a killed render left a video"
   "$duel" render "${game[@]}" --out "$tmp/k2" --size 64 --every 50 --video "$tmp/k.mp4" > /dev/null
   [ -s "$tmp/k.mp4" ] || fail "no video after the kill"

@@ -48,6 +48,10 @@ ini)
   expect_bad "nokey.ini:2: a value without a key" config --dump --config "$tmp/nokey.ini"
   printf '[neat]\npop_size = 3\0\n' > "$tmp/nul.ini"
   expect_bad "nul.ini:2: a NUL byte" config --dump --config "$tmp/nul.ini"
+  mkfifo "$tmp/fifo.ini"
+  expect_bad "fifo.ini: not a regular file" config --dump --config "$tmp/fifo.ini" # not waiting for a writer
+  printf '\357\273\277[neat]\npop_size = 40\n' > "$tmp/bom.ini"
+  "$duel" config --dump --config "$tmp/bom.ini" | grep -qx "pop_size = 40" || fail "a UTF-8 byte order mark"
   printf '[neat]\r\npop_size = 40\r\n' > "$tmp/crlf.ini"
   "$duel" config --dump --config "$tmp/crlf.ini" | grep -qx "pop_size = 40" || fail "CRLF lines"
   [ ! -e "$tmp/never" ] || fail "a bad configuration created the run directory"
@@ -91,6 +95,34 @@ trace)
   printf 'stale' > "$tmp/g.lcm.tmp"
   "$duel" play builtin:idle builtin:forager --lcm-log "$tmp/g.lcm" > /dev/null
   [ ! -e "$tmp/g.lcm.tmp" ] && "$duel" log info "$tmp/g.lcm" > /dev/null || fail "g.lcm.tmp left, or a bad log"
+  ;;
+links)
+  # an output named by a symbolic link replaces the file it points to and keeps the link; one that is no
+  # regular file (a pipe, a device) is written in place, never renamed over (as root, /dev/stdout once was)
+  printf 'old\n' > "$tmp/real.csv"
+  ln -s real.csv "$tmp/link.csv"
+  "$duel" play builtin:idle builtin:forager --trace "$tmp/link.csv" > /dev/null
+  [ -L "$tmp/link.csv" ] || fail "the link was replaced by a file"
+  head -1 "$tmp/real.csv" | grep -q "^t," || fail "the link's target was not written"
+  ln -s /dev/null "$tmp/null"
+  "$duel" play builtin:idle builtin:forager --trace "$tmp/null" --lcm-log "$tmp/null" > /dev/null
+  [ -L "$tmp/null" ] && [ -c /dev/null ] || fail "a link to /dev/null was replaced"
+  mkfifo "$tmp/fifo"
+  cat "$tmp/fifo" > "$tmp/from-fifo.csv" &
+  reader=$!
+  "$duel" play builtin:idle builtin:forager --trace "$tmp/fifo" > /dev/null
+  wait "$reader"
+  [ -p "$tmp/fifo" ] || fail "the FIFO was replaced by a file"
+  cmp -s "$tmp/from-fifo.csv" "$tmp/real.csv" || fail "the trace through the FIFO differs"
+  ln -s "$tmp/real.csv" "$tmp/link2.csv"
+  "$duel" run --config "$cfg" --out "$tmp/r" --generations 1 --quiet
+  "$duel" export "$tmp/r/champions/gen-00000.blob" --c-array x -o "$tmp/link2.csv"
+  [ -L "$tmp/link2.csv" ] && grep -q "x\[" "$tmp/real.csv" || fail "export -o through a link"
+  # a symbolic link planted where a temporary goes is removed, not followed
+  printf 'keep\n' > "$tmp/victim"
+  ln -s "$tmp/victim" "$tmp/t.csv.tmp"
+  "$duel" play builtin:idle builtin:forager --trace "$tmp/t.csv" > /dev/null
+  [ "$(cat "$tmp/victim")" = keep ] || fail "a planted link was followed"
   ;;
 stdout)
   # a command whose output cannot be written fails, with one line

@@ -161,7 +161,7 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
             fprintf(stderr, "duel_evolve: render: %s: %s\n", video, msg);
         return -1;
     }
-    if (duel_file_commit(tmp, video) != 0) {
+    if (duel_file_sync(tmp) != 0 || duel_file_commit(tmp, video) != 0) {
         fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
         remove(tmp);
         return -1;
@@ -172,6 +172,8 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
 int duel_cmd_render(int argc, char **argv)
 {
     const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL;
+    char video_target[DUEL_RC_PATH];
+    int direct = 0;
     char ffmpeg[DUEL_RC_PATH], path[DUEL_RC_PATH], err[512], suffix[64];
     int i, n_pos = 0, size = 600, every = 1, fps = 30, food = DUEL_TRAINING, a_west = 1, game_opts = 0, rc = 0;
     unsigned flags = 0, n_out = 0;
@@ -249,6 +251,15 @@ int duel_cmd_render(int argc, char **argv)
                             "ffmpeg)\n");
             return 2;
         }
+        /* the video is made as VIDEO.tmp and renamed: a link is followed to the file it names, and a
+         * place that is no regular file (a pipe, a device) is refused */
+        if (duel_out_target(video, video_target, sizeof video_target, &direct) != 0 || direct) {
+            fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video,
+                    direct ? "not a regular file (the video is written to a temporary file and renamed)"
+                           : strerror(errno));
+            return 2;
+        }
+        video = video_target;
         if (duel_rc_probe(video, ".tmp") != 0) {
             fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
             return 2;
@@ -341,6 +352,8 @@ int duel_cmd_render(int argc, char **argv)
 int duel_cmd_render_net(int argc, char **argv)
 {
     const char *blob = NULL, *out = NULL;
+    char out_target[DUEL_RC_PATH];
+    int direct = 0;
     char dot[DUEL_RC_PATH], tmp_dot[DUEL_RC_PATH], tmp_png[DUEL_RC_PATH], a1[DUEL_RC_PATH + 2], a2[DUEL_RC_PATH + 4];
     char msg[512], *text = NULL, *dargv[6];
     size_t text_len = 0;
@@ -370,6 +383,14 @@ int duel_cmd_render_net(int argc, char **argv)
                         "graphviz)\n");
         return 2;
     }
+    /* made as FILE.png.tmp and renamed, as the video is */
+    if (duel_out_target(out, out_target, sizeof out_target, &direct) != 0 || direct) {
+        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out,
+                direct ? "not a regular file (the picture is written to a temporary file and renamed)"
+                       : strerror(errno));
+        return 2;
+    }
+    out = out_target;
     /* the picture in memory first: a bad blob is reported before any file is made */
     f = open_memstream(&text, &text_len);
     if (f == NULL) {
@@ -392,7 +413,7 @@ int duel_cmd_render_net(int argc, char **argv)
         free(text);
         return 2;
     }
-    fd = open(tmp_dot, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    fd = duel_tmp_create(tmp_dot);
     if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
         fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
         if (fd >= 0) {
@@ -424,7 +445,7 @@ int duel_cmd_render_net(int argc, char **argv)
         else
             fprintf(stderr, "duel_evolve: render-net: %s: %s\n", out, msg);
         rc = 1;
-    } else if (duel_file_commit(tmp_png, out) != 0) {
+    } else if (duel_file_sync(tmp_png) != 0 || duel_file_commit(tmp_png, out) != 0) {
         fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
         rc = 1;
     }

@@ -1,5 +1,5 @@
 /* duel_files.c - every file the tools write goes through here: temporary file, fsync, rename, directory sync; whole-file reads, durable appends, CSV truncation. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -75,13 +75,83 @@ static int duel_tmp_name(char *tmp, size_t cap, const char *path)
     return 0;
 }
 
+int duel_out_target(const char *path, char *target, size_t cap, int *direct)
+{
+    struct stat st;
+    *direct = 0;
+    if (strlen(path) >= cap) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(target, path);
+    if (lstat(path, &st) != 0)
+        return errno == ENOENT ? 0 : -1; /* a new file */
+    if (S_ISLNK(st.st_mode)) {
+        /* the link stays; what it points to is replaced (a dangling one: written through, creating it) */
+        char *real = realpath(path, NULL);
+        if (real == NULL) {
+            *direct = 1;
+            return 0;
+        }
+        if (strlen(real) >= cap || stat(real, &st) != 0) {
+            free(real);
+            errno = ENAMETOOLONG;
+            return -1;
+        }
+        strcpy(target, real);
+        free(real);
+    }
+    if (S_ISDIR(st.st_mode)) {
+        errno = EISDIR;
+        return -1;
+    }
+    /* a terminal, a pipe (/dev/stdout), a device: there is nothing to rename over */
+    *direct = !S_ISREG(st.st_mode);
+    return 0;
+}
+
+int duel_tmp_create(const char *tmp)
+{
+    /* a stale temporary of ours (a killed writer) is taken over; a symbolic link planted there is removed,
+     * never followed */
+    if (unlink(tmp) != 0 && errno != ENOENT)
+        return -1;
+    return open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0644);
+}
+
+int duel_file_sync(const char *path)
+{
+    int fd = open(path, O_RDONLY), r, e;
+    if (fd < 0)
+        return -1;
+    r = fsync(fd);
+    e = errno;
+    close(fd);
+    errno = e;
+    return r;
+}
+
 int duel_file_replace(const char *path, const void *data, size_t len)
 {
-    char tmp[4200];
-    int fd, e;
-    if (duel_tmp_name(tmp, sizeof tmp, path) != 0)
+    char target[4096], tmp[4200];
+    int fd, e, direct;
+    if (duel_out_target(path, target, sizeof target, &direct) != 0)
         return -1;
-    fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (direct) {
+        fd = open(target, O_WRONLY | O_TRUNC);
+        if (fd < 0)
+            return -1;
+        if (duel_write_all(fd, data, len) != 0) {
+            e = errno;
+            close(fd);
+            errno = e;
+            return -2;
+        }
+        return close(fd) == 0 ? 0 : -2;
+    }
+    if (duel_tmp_name(tmp, sizeof tmp, target) != 0)
+        return -1;
+    fd = duel_tmp_create(tmp);
     if (fd < 0)
         return -1;
     if (duel_write_all(fd, data, len) != 0 || fsync(fd) != 0) {
@@ -97,19 +167,33 @@ int duel_file_replace(const char *path, const void *data, size_t len)
         errno = e;
         return -2;
     }
-    return duel_file_commit(tmp, path) == 0 ? 0 : -2;
+    return duel_file_commit(tmp, target) == 0 ? 0 : -2;
 }
 
 int duel_out_open(duel_out *o, const char *path)
 {
+    int fd;
     memset(o, 0, sizeof *o);
-    if (strlen(path) >= sizeof o->path || duel_tmp_name(o->tmp, sizeof o->tmp, path) != 0) {
-        errno = ENAMETOOLONG;
+    if (duel_out_target(path, o->path, sizeof o->path, &o->direct) != 0)
+        return -1;
+    if (o->direct) {
+        o->f = fopen(o->path, "wb");
+        return o->f != NULL ? 0 : -1;
+    }
+    if (duel_tmp_name(o->tmp, sizeof o->tmp, o->path) != 0)
+        return -1;
+    fd = duel_tmp_create(o->tmp);
+    if (fd < 0)
+        return -1;
+    o->f = fdopen(fd, "wb");
+    if (o->f == NULL) {
+        int e = errno;
+        close(fd);
+        unlink(o->tmp);
+        errno = e;
         return -1;
     }
-    strcpy(o->path, path);
-    o->f = fopen(o->tmp, "wb");
-    return o->f != NULL ? 0 : -1;
+    return 0;
 }
 
 int duel_out_commit(duel_out *o)
@@ -119,7 +203,7 @@ int duel_out_commit(duel_out *o)
         errno = EBADF;
         return -1;
     }
-    bad = fflush(o->f) != 0 || ferror(o->f) || fsync(fileno(o->f)) != 0;
+    bad = fflush(o->f) != 0 || ferror(o->f) || (!o->direct && fsync(fileno(o->f)) != 0);
     e = errno;
     if (fclose(o->f) != 0 && !bad) {
         bad = 1;
@@ -127,11 +211,12 @@ int duel_out_commit(duel_out *o)
     }
     o->f = NULL;
     if (bad) {
-        unlink(o->tmp);
+        if (!o->direct)
+            unlink(o->tmp);
         errno = e ? e : EIO;
         return -1;
     }
-    return duel_file_commit(o->tmp, o->path);
+    return o->direct ? 0 : duel_file_commit(o->tmp, o->path);
 }
 
 void duel_out_abort(duel_out *o)
@@ -139,7 +224,8 @@ void duel_out_abort(duel_out *o)
     if (o->f != NULL)
         fclose(o->f);
     o->f = NULL;
-    unlink(o->tmp);
+    if (!o->direct)
+        unlink(o->tmp);
 }
 
 int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)

@@ -19,16 +19,32 @@ int duel_file_replace(const char *path, const void *data, size_t len);
 /* A file written as a stream (a trace, a log), put in place only by
  * duel_out_commit. */
 typedef struct duel_out {
-    FILE *f; /* write here */
+    FILE *f;     /* write here */
+    int direct;  /* 1: written in place (see duel_out_target), no temporary */
     char path[4096], tmp[4104];
 } duel_out;
-/* Opens path.tmp. 0, or -1 (errno set; ENAMETOOLONG for a path too long). */
+/* Opens path.tmp (or path itself, see duel_out_target). 0, or -1 (errno
+ * set; ENAMETOOLONG for a path too long, EISDIR for a directory). */
 int duel_out_open(duel_out *o, const char *path);
 /* Flushes, syncs and closes the stream, renames it over path and syncs the
  * directory. 0, or -1 (errno set; the temporary is gone, path unchanged). */
 int duel_out_commit(duel_out *o);
 /* Closes the stream and removes the temporary: path is as it was. */
 void duel_out_abort(duel_out *o);
+
+/* Where an output named path is written: a symbolic link is followed (the
+ * link stays, its target is replaced; a dangling one is written through); an
+ * existing path that is not a regular file (a terminal, a pipe such as
+ * /dev/stdout, a device) is written in place (*direct = 1): there is nothing
+ * to rename over. 0 with the file in target, or -1 (errno set; EISDIR for a
+ * directory). */
+int duel_out_target(const char *path, char *target, size_t cap, int *direct);
+/* Creates the temporary file tmp afresh: a stale one (a killed writer's) is
+ * removed first, and a symbolic link there is never followed. A descriptor
+ * open for writing, or -1 (errno set). */
+int duel_tmp_create(const char *tmp);
+/* fsync of the file at path (one another program wrote). 0 or -1. */
+int duel_file_sync(const char *path);
 
 /* Renames tmp over path and syncs path's directory. 0, or -1 (errno set; tmp
  * removed when the rename failed). */

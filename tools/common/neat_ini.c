@@ -8,7 +8,6 @@
 
 #include "neat_ini.h"
 
-#define NEAT_INI_MAX_KEYS 512 /* distinct section/key pairs remembered for the duplicate check */
 
 typedef struct ini_seen {
     char section[NEAT_INI_MAX_LINE + 1];
@@ -53,6 +52,12 @@ int neat_ini_parse_text(const char *name, const char *text, size_t len, neat_ini
             line += *p == '\n';
         snprintf(err, err_len, "%s:%u: a NUL byte: not a text file", name, line + 1);
         return -1;
+    }
+    if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0) { /* a UTF-8 byte order mark, as some editors write */
+        text += 3;
+        len -= 3;
+        p = text;
+        end = text + len;
     }
     seen = (ini_seen *)malloc(NEAT_INI_MAX_KEYS * sizeof *seen);
     if (seen == NULL) {
@@ -143,13 +148,19 @@ int neat_ini_parse_file(const char *path, neat_ini_handler h, void *user, char *
     char *text;
     size_t got;
     int r;
-    FILE *f = fopen(path, "rb");
+    FILE *f;
+    /* before opening: opening a FIFO would wait for a writer */
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        snprintf(err, err_len, "%s: not a regular file (a directory, a pipe or a device): expected an INI file", path);
+        return -1;
+    }
+    f = fopen(path, "rb");
     if (f == NULL) {
         snprintf(err, err_len, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
     if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
-        snprintf(err, err_len, "%s: not a regular file (a directory?): expected an INI file", path);
+        snprintf(err, err_len, "%s: not a regular file (a directory, a pipe or a device): expected an INI file", path);
         fclose(f);
         return -1;
     }

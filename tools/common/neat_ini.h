@@ -13,11 +13,13 @@
  *   - [section], blanks allowed around the name;
  *   - key = value: blanks around key and value are dropped; the value is the
  *     rest of the line; every key is inside a section;
- *   - a key given twice in one section is an error (naming both lines).
+ *   - a key given twice in one section is an error (naming both lines);
+ *   - at most NEAT_INI_MAX_KEYS keys; a UTF-8 byte order mark at the start is skipped.
  * Anything else is an error. The reader knows no keys: the handler does.
  */
 #define NEAT_INI_MAX_LINE 1000
 #define NEAT_INI_MAX_FILE (1u << 20)
+#define NEAT_INI_MAX_KEYS 512 /* far more than every key of every section */
 
 /* Called for each key in file order: 0, or -1 with one line in err (no file
  * or line: the reader adds them). */

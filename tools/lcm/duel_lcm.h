@@ -34,6 +34,7 @@ const char *duel_lcm_outcome_text(int outcome, int forfeit);
 typedef struct duel_lcm_rec {
     lcm_eventlog_t *log;
     char path[4096], tmp[4100]; /* written to tmp, renamed to path by duel_lcm_rec_close */
+    int direct;                 /* path is no regular file (duel_out_target): written in place */
     int failed;
 } duel_lcm_rec;
 

@@ -80,11 +80,11 @@ int duel_lcm_reader_next(duel_lcm_reader *r, duel_lcm_event *ev, char *err, size
                  (unsigned long long)r->offset, (unsigned long)clen, (unsigned long)dlen);
         return -1;
     }
-    if ((uint64_t)DUEL_LCM_HEADER + clen + dlen > r->size - r->offset) {
+    if (r->offset + DUEL_LCM_HEADER + clen + dlen > r->size) { /* no overflow: clen, dlen are bounded above */
         /* the lengths claim more than the file holds: nothing is allocated for them */
+        uint64_t left = r->size > r->offset + DUEL_LCM_HEADER ? r->size - r->offset - DUEL_LCM_HEADER : 0;
         snprintf(err, err_len, "%s: offset %llu: truncated event (%llu of %lu bytes after its header)", r->path,
-                 (unsigned long long)r->offset, (unsigned long long)(r->size - r->offset - DUEL_LCM_HEADER),
-                 (unsigned long)clen + dlen);
+                 (unsigned long long)r->offset, (unsigned long long)left, (unsigned long)clen + dlen);
         return -1;
     }
     need = (size_t)clen + 1 + dlen;

@@ -25,10 +25,18 @@ int duel_lcm_rec_open(duel_lcm_rec *r, const char *path, char *err, size_t err_l
         snprintf(err, err_len, "%.200s...: path too long", path);
         return -1;
     }
-    snprintf(r->path, sizeof r->path, "%s", path);
-    snprintf(r->tmp, sizeof r->tmp, "%s.tmp", path);
+    if (duel_out_target(path, r->path, sizeof r->path, &r->direct) != 0) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
+        return -1;
+    }
+    snprintf(r->tmp, sizeof r->tmp, "%s.tmp", r->path);
+    /* a stale temporary, or a link planted there, is removed: lcm_eventlog_create would follow it */
+    if (!r->direct && unlink(r->tmp) != 0 && errno != ENOENT) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
+        return -1;
+    }
     errno = 0;
-    r->log = lcm_eventlog_create(r->tmp, "w");
+    r->log = lcm_eventlog_create(r->direct ? r->path : r->tmp, "w");
     if (r->log == NULL) {
         snprintf(err, err_len, "%s: cannot write: %s", path, errno ? strerror(errno) : "lcm_eventlog_create failed");
         return -1;
@@ -57,12 +65,16 @@ int duel_lcm_rec_close(duel_lcm_rec *r, int keep, char *err, size_t err_len)
     int bad;
     if (r->log == NULL)
         return -1;
-    bad = r->failed || fflush(r->log->f) != 0 || ferror(r->log->f) || (keep && fsync(fileno(r->log->f)) != 0);
+    bad = r->failed || fflush(r->log->f) != 0 || ferror(r->log->f) ||
+          (keep && !r->direct && fsync(fileno(r->log->f)) != 0);
     lcm_eventlog_destroy(r->log);
     r->log = NULL;
-    if (keep && !bad && duel_file_commit(r->tmp, r->path) == 0)
+    if (r->direct && !bad)
         return 0;
-    unlink(r->tmp);
+    if (keep && !bad && !r->direct && duel_file_commit(r->tmp, r->path) == 0)
+        return 0;
+    if (!r->direct)
+        unlink(r->tmp);
     if (keep) {
         snprintf(err, err_len, "%s: write failed: %s", r->path, errno ? strerror(errno) : "I/O error");
         return -1;

@@ -95,10 +95,15 @@ int duel_exec_run(const char *path, char *const argv[], char *msg, size_t msg_le
         if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent || in < 0 || out < 0 ||
             dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(pipefd[1], 2) < 0)
             _exit(127);
-        close(in);
-        close(out);
-        close(pipefd[0]);
-        close(pipefd[1]);
+        /* a source that already was 0, 1 or 2 (the parent started with it closed) stays open */
+        if (in > 2)
+            close(in);
+        if (out > 2)
+            close(out);
+        if (pipefd[0] > 2)
+            close(pipefd[0]);
+        if (pipefd[1] > 2)
+            close(pipefd[1]);
         close(errpipe[0]);
         execve(path, argv, environ);
         e = errno;

@@ -371,7 +371,7 @@ int duel_render_write_png(const duel_render *r, const char *path, char *err, siz
         return -1;
     }
     snprintf(tmp, len, "%s%s", path, r->tmp);
-    fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    fd = duel_tmp_create(tmp);
     if (fd < 0 || (f = fdopen(fd, "wb")) == NULL) {
         snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
         if (fd >= 0) {
