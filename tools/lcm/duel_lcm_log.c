@@ -335,20 +335,6 @@ void duel_lcm_game_free(duel_lcm_game *g)
 
 /* ---- replay frames (duel_replay.h) ---- */
 
-static int duel_lcm_frame_push(duel_replay *r, const duel_frame *f)
-{
-    if (r->n == r->cap) {
-        size_t cap = r->cap ? 2 * r->cap : 256;
-        duel_frame *nf = (duel_frame *)realloc(r->frames, cap * sizeof *nf);
-        if (nf == NULL)
-            return -1;
-        r->frames = nf;
-        r->cap = cap;
-    }
-    r->frames[r->n++] = *f;
-    return 0;
-}
-
 int duel_replay_from_lcm_log(duel_replay *r, const char *path, char *err, size_t err_len)
 {
     duel_lcm_game *g;
@@ -369,7 +355,7 @@ int duel_replay_from_lcm_log(duel_replay *r, const char *path, char *err, size_t
             memcpy(f.in, g->in[t], sizeof f.in);
             memcpy(f.out, g->out[t], sizeof f.out);
             f.ev = g->ev[t + 1];
-            if (duel_lcm_frame_push(r, &f) != 0) {
+            if (duel_replay_push(r, &f) != 0) {
                 snprintf(err, err_len, "%s: out of memory", path);
                 status = -1;
                 break;
@@ -380,7 +366,7 @@ int duel_replay_from_lcm_log(duel_replay *r, const char *path, char *err, size_t
             f.t = g->final_step;
             f.w = g->final_w;
             f.ev.outcome = g->final_w.outcome;
-            if (duel_lcm_frame_push(r, &f) != 0) {
+            if (duel_replay_push(r, &f) != 0) {
                 snprintf(err, err_len, "%s: out of memory", path);
                 status = -1;
             }

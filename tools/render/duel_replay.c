@@ -36,6 +36,15 @@ static int duel_replay_grow(duel_replay *r)
     return 0;
 }
 
+int duel_replay_push(duel_replay *r, const duel_frame *f)
+{
+    int err = duel_replay_grow(r);
+    if (err)
+        return err;
+    r->frames[r->n++] = *f;
+    return 0;
+}
+
 /* The trace callback's state: where frames go, and the first error (the
  * game cannot be stopped from the callback, so later frames are dropped). */
 typedef struct duel_replay_rec {

@@ -27,6 +27,8 @@ typedef struct duel_replay {
 
 void duel_replay_init(duel_replay *r);
 void duel_replay_free(duel_replay *r);
+/* Appends a copy of f. 0 or -ENOMEM. */
+int duel_replay_push(duel_replay *r, const duel_frame *f);
 
 /* Plays west against east on food_config and records every frame
  * (tools/duel_replay.c). 0, or a negative duel_error / -ENOMEM. */
