@@ -61,6 +61,23 @@ static int duel_rc_probe(const char *path, const char *suffix)
     return unlink(tmp);
 }
 
+/* Where an output that another program makes as PATH.tmp and that is then
+ * renamed goes (duel_out_target): a link is followed to the file it names,
+ * and a place that is no regular file (a pipe, a device) is refused, since
+ * nothing can be renamed over it. 0, or -1 after one line on stderr. */
+static int duel_rc_target(const char *cmd, const char *path, char target[DUEL_RC_PATH], const char *what)
+{
+    int direct = 0;
+    if (duel_out_target(path, target, DUEL_RC_PATH, &direct) == 0 && !direct)
+        return 0;
+    if (direct)
+        fprintf(stderr, "duel_evolve: %s: %s: cannot write: not a regular file (the %s is written to a temporary "
+                        "file and renamed)\n", cmd, path, what);
+    else
+        fprintf(stderr, "duel_evolve: %s: %s: cannot write: %s\n", cmd, path, strerror(errno));
+    return -1;
+}
+
 static double duel_rc_now(void)
 {
     struct timespec ts;
@@ -173,7 +190,6 @@ int duel_cmd_render(int argc, char **argv)
 {
     const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL;
     char video_target[DUEL_RC_PATH];
-    int direct = 0;
     char ffmpeg[DUEL_RC_PATH], path[DUEL_RC_PATH], err[512], suffix[64];
     int i, n_pos = 0, size = 600, every = 1, fps = 30, food = DUEL_TRAINING, a_west = 1, game_opts = 0, rc = 0;
     unsigned flags = 0, n_out = 0;
@@ -251,14 +267,8 @@ int duel_cmd_render(int argc, char **argv)
                             "ffmpeg)\n");
             return 2;
         }
-        /* the video is made as VIDEO.tmp and renamed: a link is followed to the file it names, and a
-         * place that is no regular file (a pipe, a device) is refused */
-        if (duel_out_target(video, video_target, sizeof video_target, &direct) != 0 || direct) {
-            fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video,
-                    direct ? "not a regular file (the video is written to a temporary file and renamed)"
-                           : strerror(errno));
+        if (duel_rc_target("render", video, video_target, "video") != 0)
             return 2;
-        }
         video = video_target;
         if (duel_rc_probe(video, ".tmp") != 0) {
             fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
@@ -353,7 +363,6 @@ int duel_cmd_render_net(int argc, char **argv)
 {
     const char *blob = NULL, *out = NULL;
     char out_target[DUEL_RC_PATH];
-    int direct = 0;
     char dot[DUEL_RC_PATH], tmp_dot[DUEL_RC_PATH], tmp_png[DUEL_RC_PATH], a1[DUEL_RC_PATH + 2], a2[DUEL_RC_PATH + 4];
     char msg[512], *text = NULL, *dargv[6];
     size_t text_len = 0;
@@ -383,13 +392,8 @@ int duel_cmd_render_net(int argc, char **argv)
                         "graphviz)\n");
         return 2;
     }
-    /* made as FILE.png.tmp and renamed, as the video is */
-    if (duel_out_target(out, out_target, sizeof out_target, &direct) != 0 || direct) {
-        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out,
-                direct ? "not a regular file (the picture is written to a temporary file and renamed)"
-                       : strerror(errno));
+    if (duel_rc_target("render-net", out, out_target, "picture") != 0)
         return 2;
-    }
     out = out_target;
     /* the picture in memory first: a bad blob is reported before any file is made */
     f = open_memstream(&text, &text_len);

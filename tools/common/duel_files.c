@@ -39,12 +39,10 @@ static void duel_dir_of(const char *path, char *dir, size_t cap)
         snprintf(dir, cap, "%.*s", (int)(slash - path), path);
 }
 
-int duel_dir_sync(const char *path)
+/* fsync of what path names, opened read-only with flags added. 0 or -1 (errno set). */
+static int duel_fsync_path(const char *path, int flags)
 {
-    char dir[4200];
-    int fd, r, e;
-    duel_dir_of(path, dir, sizeof dir);
-    fd = open(dir, O_RDONLY | O_DIRECTORY);
+    int fd = open(path, O_RDONLY | flags), r, e;
     if (fd < 0)
         return -1;
     r = fsync(fd);
@@ -52,6 +50,13 @@ int duel_dir_sync(const char *path)
     close(fd);
     errno = e;
     return r;
+}
+
+int duel_dir_sync(const char *path)
+{
+    char dir[4200];
+    duel_dir_of(path, dir, sizeof dir);
+    return duel_fsync_path(dir, O_DIRECTORY);
 }
 
 int duel_file_commit(const char *tmp, const char *path)
@@ -121,14 +126,7 @@ int duel_tmp_create(const char *tmp)
 
 int duel_file_sync(const char *path)
 {
-    int fd = open(path, O_RDONLY), r, e;
-    if (fd < 0)
-        return -1;
-    r = fsync(fd);
-    e = errno;
-    close(fd);
-    errno = e;
-    return r;
+    return duel_fsync_path(path, 0);
 }
 
 int duel_file_replace(const char *path, const void *data, size_t len)
@@ -274,10 +272,11 @@ int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)
 int duel_file_append(const char *path, const char *text)
 {
     struct stat st;
-    int created = stat(path, &st) != 0;
-    int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644), e;
+    int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644), e, created;
     if (fd < 0)
         return -1;
+    /* empty before this write: just created (or left empty by a failed one), so its name needs the sync too */
+    created = fstat(fd, &st) != 0 || st.st_size == 0;
     if (duel_write_all(fd, text, strlen(text)) != 0 || fsync(fd) != 0) {
         e = errno;
         close(fd);

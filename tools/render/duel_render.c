@@ -52,7 +52,6 @@ int duel_render_open(duel_render *r, int size, char *err, size_t err_len)
         return -1;
     }
     r->size = size;
-    snprintf(r->tmp, sizeof r->tmp, ".tmp"); /* duel_files.h: PATH.tmp, taken over by the next write of PATH */
     r->buf = (uint8_t *)calloc((size_t)w * (size_t)w, 4);
     r->rgb = (uint8_t *)calloc((size_t)size * (size_t)size, 3);
     if (r->buf == NULL || r->rgb == NULL) {
@@ -360,7 +359,7 @@ static int duel_rd_png_encode(FILE *f, const uint8_t *rgb, int n, duel_rd_png_er
 
 int duel_render_write_png(const duel_render *r, const char *path, char *err, size_t err_len)
 {
-    size_t len = strlen(path) + sizeof r->tmp;
+    size_t len = strlen(path) + sizeof ".tmp"; /* duel_files.h: PATH.tmp, taken over by the next write of PATH */
     char *tmp = (char *)malloc(len);
     duel_rd_png_err e;
     FILE *f = NULL;
@@ -370,7 +369,7 @@ int duel_render_write_png(const duel_render *r, const char *path, char *err, siz
         snprintf(err, err_len, "%s: out of memory", path);
         return -1;
     }
-    snprintf(tmp, len, "%s%s", path, r->tmp);
+    snprintf(tmp, len, "%s.tmp", path);
     fd = duel_tmp_create(tmp);
     if (fd < 0 || (f = fdopen(fd, "wb")) == NULL) {
         snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));

@@ -49,7 +49,6 @@ typedef struct duel_render {
     void *ctx;     /* OSMesaContext */
     uint8_t *buf;  /* (size * SS)^2 RGBA, rows bottom-up: what OpenGL draws into */
     uint8_t *rgb;  /* size^2 RGB, rows top-down: the last frame drawn */
-    char tmp[64];  /* the suffix of temporary files, ".tmp" (duel_files.h) */
 } duel_render;
 
 /* An off-screen OpenGL context for size x size images. 0, or -1 with one
