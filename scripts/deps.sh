@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the build, the tests and the benchmarks need, if any is missing.
 set -euo pipefail
-PKGS="build-essential cmake ninja-build pkg-config libcmocka-dev clang llvm libclang-rt-14-dev \
+PKGS="build-essential cmake ninja-build pkg-config libcmocka-dev procps clang llvm libclang-rt-14-dev \
       gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-system-arm \
       gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc valgrind graphviz \
       libosmesa6-dev libpng-dev ffmpeg liblcm-dev liblcm-bin liblcm-java libglib2.0-dev"
