@@ -25,7 +25,7 @@
 /* ---- versions ---------------------------------------------------------- */
 #define NEAT_VERSION_MAJOR 0
 #define NEAT_VERSION_MINOR 1
-#define NEAT_CHECKPOINT_VERSION 1 /* checkpoint format, apart from the code */
+#define NEAT_CHECKPOINT_VERSION 2 /* checkpoint format, apart from the code */
 
 /* ---- errors ------------------------------------------------------------- */
 enum neat_error {
@@ -168,9 +168,19 @@ int neat_genome_add_conn(neat_genome *g, uint32_t in, uint32_t out, double weigh
 /* bias and every input connected to every output (the paper's minimal start) */
 int neat_genome_minimal(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, const neat_alloc *a);
 /* H hidden nodes: bias+inputs -> hidden, hidden -> hidden (all pairs, self
- * included), hidden -> outputs, plus bias+inputs -> outputs */
+ * included), hidden -> outputs, plus direct connections to the outputs:
+ * NEAT_DIRECT_INPUTS from the bias and every input ((I+1)O: H^2 + 16H + 39
+ * connections for the duel's 12 inputs and 3 outputs), NEAT_DIRECT_BIAS
+ * from the bias only (O: H^2 + 16H + 3). Innovations 0, 1, ... in that
+ * order; weights 0. */
+enum neat_direct { NEAT_DIRECT_INPUTS = 0, NEAT_DIRECT_BIAS = 1 };
 int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint32_t n_hidden,
-                                 const neat_alloc *a);
+                                 int direct, const neat_alloc *a);
+/* The network of a champion blob (validated as nrt_load does) as a genome:
+ * nodes and connections kept, node ids as the blob's node indices (bias 0,
+ * inputs, outputs, hidden), innovations 0, 1, ... in the blob's connection
+ * order, weights the blob's. NEAT_E_FORMAT if the blob is not valid. */
+int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a);
 uint32_t neat_genome_hidden_count(const neat_genome *g);
 uint32_t neat_genome_enabled_count(const neat_genome *g);
 /* Compatibility distance delta under p (c1, c2, c3, normalize_by_size). */
@@ -230,7 +240,11 @@ typedef struct neat_species_info {
 } neat_species_info;
 uint32_t neat_pop_species_count(const neat_pop *pop);
 int neat_pop_species(const neat_pop *pop, uint32_t k, neat_species_info *info);
+/* The compatibility threshold the current generation was speciated with,
+ * and the one the next speciation will use (moved by delta_t_step toward
+ * target_species after each speciation). */
 double neat_pop_delta_t(const neat_pop *pop);
+double neat_pop_next_delta_t(const neat_pop *pop);
 uint32_t neat_pop_innovations(const neat_pop *pop); /* innovation numbers used so far */
 /* Changes the parameters of a running population (a resumed run's
  * overrides). NEAT_E_PARAM if p is out of range or changes pop_size,

@@ -10,7 +10,7 @@
  * caller's, played through one batch callback:
  *
  *     neat_coev *c;
- *     neat_coev_create(&c, &params, &coev_params, seed, NULL);
+ *     neat_coev_create(&c, &params, &coev_params, NULL, seed, NULL);
  *     for (;;) {
  *         neat_coev_report rep;
  *         if (neat_coev_step(c, play_batch, my_data, &rep) != NEAT_OK) break;
@@ -23,7 +23,7 @@
  * threads: the run is the same.
  */
 
-#define NEAT_COEV_CHECKPOINT_VERSION 1
+#define NEAT_COEV_CHECKPOINT_VERSION 2
 
 /* One game for the callback: a plays b. */
 typedef struct neat_game {
@@ -43,6 +43,11 @@ typedef struct neat_coev_params {
     uint32_t hof_opponents;     /* 8: drawn with replacement from its hall of fame */
     uint32_t first_opponents;   /* 12: members drawn in generation 0, when there is no history */
     uint32_t compare_configs;   /* 144: a comparison plays each configuration from both sides */
+    /* 1: the control of the paper's Figure 7: the winner of every game the
+     * coevolution plays (host games, the champion's and the dominance
+     * comparisons) is a fair coin drawn from the game's seed, and play is
+     * never called; 0: the games decide */
+    int random_fitness;
 } neat_coev_params;
 
 neat_coev_params neat_coev_params_default(void);
@@ -51,9 +56,18 @@ int neat_coev_params_check(const neat_coev_params *cp, const char **field);
 
 typedef struct neat_coev neat_coev;
 
-/* Two populations of p (both from seed, through different derived seeds). */
-int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp, uint64_t seed,
-                     const neat_alloc *alloc);
+/* Two populations of p (both from seed, through different derived seeds),
+ * from start (NULL: the minimal network; see neat_pop_create), which the
+ * coevolution keeps (neat_coev_start, and its checkpoint).
+ *
+ * p->pop_stagnation must be 0 (else NEAT_E_PARAM): that rule (only the two
+ * best species breed once the population's best fitness has not improved
+ * for pop_stagnation generations) needs an absolute fitness. Here fitness
+ * is a count of wins against opponents that change every generation,
+ * bounded by the games played and reached early, so the best never
+ * "improves" and the rule would fire on a fixed schedule. */
+int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp, const neat_start *start,
+                     uint64_t seed, const neat_alloc *alloc);
 void neat_coev_free(neat_coev *c);
 
 /* What one population did in a generation. Sizes are hidden nodes and
@@ -65,6 +79,8 @@ typedef struct neat_coev_pop_report {
     double delta_t;            /* the threshold this generation was speciated with */
     double mean_hidden, mean_conns;
     uint32_t best_hidden, best_conns;
+    uint32_t min_hidden, max_hidden; /* over the whole population */
+    uint32_t min_conns, max_conns;
     uint64_t games;            /* its hosts' games */
 } neat_coev_pop_report;
 
@@ -87,6 +103,9 @@ typedef struct neat_coev_report {
 int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *rep);
 
 uint32_t neat_coev_generation(const neat_coev *c); /* the next generation to play */
+/* The start topology both populations were created from (its weights are
+ * those it was given; every individual drew its own). */
+const neat_genome *neat_coev_start(const neat_coev *c);
 uint64_t neat_coev_seed(const neat_coev *c);
 const neat_coev_params *neat_coev_get_params(const neat_coev *c);
 const neat_pop *neat_coev_pop(const neat_coev *c, uint32_t which);
@@ -108,11 +127,11 @@ uint32_t neat_coev_dominant_count(const neat_coev *c);
 int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d);
 
 /* New parameters for a resumed run: both populations' (pop_size, inputs and
- * outputs cannot change) and the protocol's. */
+ * outputs cannot change; pop_stagnation must stay 0) and the protocol's. */
 int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp);
 
-/* The whole state (docs/formats.md, "Coevolution checkpoint"): both
- * populations, halls of fame, the species champions the next generation
+/* The whole state (docs/formats.md, "Coevolution checkpoint"): the start
+ * topology, both populations, halls of fame, the species champions the next generation
  * plays, the dominance tournament. Loading it and stepping on gives the same
  * run as never stopping. */
 int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);

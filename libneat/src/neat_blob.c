@@ -1,4 +1,4 @@
-/* neat_blob.c - genome -> champion blob: the phenotype the runtime executes (format in docs/formats.md). */
+/* neat_blob.c - genome <-> champion blob: the phenotype the runtime executes (format in docs/formats.md), and a blob's network as a start genome. */
 #include <math.h>
 #include <string.h>
 
@@ -97,4 +97,44 @@ int neat_blob_write(const neat_genome *g, uint32_t n_in, uint32_t n_out, uint8_t
     if (len != NULL)
         *len = size;
     return NEAT_OK;
+}
+
+int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a)
+{
+    nrt_net net;
+    size_t need = 0;
+    void *mem;
+    uint32_t i, k, t;
+    int err;
+
+    if (g == NULL || blob == NULL)
+        return NEAT_E_ARG;
+    neat_genome_init(g);
+    if (nrt_mem_required(blob, len, &need) != NRT_OK)
+        return NEAT_E_FORMAT;
+    mem = neat_mem_realloc(a, NULL, 0, need);
+    if (mem == NULL)
+        return NEAT_E_NOMEM;
+    if (nrt_load(&net, blob, len, mem, need) != NRT_OK) {
+        neat_mem_free(a, mem, need);
+        return NEAT_E_FORMAT;
+    }
+    /* the runtime's node order is the genome's: bias, inputs, outputs, hidden */
+    err = NEAT_OK;
+    for (i = 0; i < net.n_nodes && !err; i++)
+        err = neat_genome_add_node(g, i,
+                                   i == 0 ? NEAT_NODE_BIAS
+                                   : i < net.n_inputs ? NEAT_NODE_INPUT
+                                   : i < (uint32_t)net.n_inputs + net.n_outputs ? NEAT_NODE_OUTPUT
+                                                                                 : NEAT_NODE_HIDDEN,
+                                   a);
+    /* connections grouped by target: end[t] is one past target t's last */
+    for (t = 0, k = 0; t < (uint32_t)net.n_outputs + net.n_hidden && !err; t++)
+        for (; k < net.end[t] && !err; k++)
+            err = neat_genome_add_conn(g, net.src[k], net.n_inputs + t,
+                                       (double)net.weight[k] / (double)(1 << NRT_WEIGHT_FRAC_BITS), k, 1, a);
+    neat_mem_free(a, mem, need);
+    if (err)
+        neat_genome_free(g, a);
+    return err;
 }

@@ -100,7 +100,7 @@ static void neat_genome_max_ids(const neat_genome *g, uint32_t *node, uint32_t *
 static int neat_pop_state_ok(const neat_pop *pop)
 {
     uint32_t i, k, j, node = 0, innov = 0;
-    if (!(pop->delta_t > 0) || pop->delta_t > 1e300)
+    if (!(pop->delta_t > 0) || pop->delta_t > 1e300 || !(pop->delta_t_used > 0) || pop->delta_t_used > 1e300)
         return 0;
     if ((pop->rng.s[0] | pop->rng.s[1] | pop->rng.s[2] | pop->rng.s[3]) == 0)
         return 0;
@@ -146,6 +146,7 @@ int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len)
     neat_put_u32(&w, pop->next_species_id);
     neat_put_u32(&w, pop->since_pop_improved);
     neat_put_f64(&w, pop->delta_t);
+    neat_put_f64(&w, pop->delta_t_used);
     neat_put_u32(&w, pop->iv.n);
     for (i = 0; i < pop->iv.n; i++) {
         const neat_innov *v = &pop->iv.list[i];
@@ -228,6 +229,7 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
                        pop->since_pop_improved > pop->generation))
             neat_fail(&r, NEAT_E_FORMAT); /* counters past their limit: the run could not go on */
         pop->delta_t = neat_get_f64(&r);
+        pop->delta_t_used = neat_get_f64(&r);
         n = neat_get_count(&r, 25);
         if (!r.err && neat_mem_reserve(&pop->a, (void **)&pop->iv.list, &pop->iv.cap, n, sizeof(neat_innov)))
             neat_fail(&r, NEAT_E_NOMEM);

@@ -24,6 +24,7 @@ struct neat_coev {
     uint64_t seed;
     uint32_t generation;
     neat_pop *pop[2];
+    neat_genome start;    /* the start topology */
     neat_glist hof[2];    /* hof[i].g[t]: population i's best of generation t */
     neat_glist champs[2]; /* champions of its best species last generation, best first */
     neat_genome champion; /* the last generation champion */
@@ -39,6 +40,7 @@ struct neat_coev {
 #define NEAT_TAG_OPP 0x4f5050u      /* opponent draws */
 #define NEAT_TAG_HOST 0x484f5354u   /* host games */
 #define NEAT_TAG_CMP 0x434d50u      /* comparisons */
+#define NEAT_TAG_COIN 0x434f494eu   /* random fitness: a game's coin */
 
 #define NEAT_COEV_MAX_CHAMPS 64        /* species_opponents at most */
 #define NEAT_COEV_MAX_CONFIGS 30000u   /* compare_configs at most: a comparison's wins fit 16 bits */
@@ -53,6 +55,7 @@ neat_coev_params neat_coev_params_default(void)
     cp.hof_opponents = 8;
     cp.first_opponents = 12;
     cp.compare_configs = 144;
+    cp.random_fitness = 0;
     return cp;
 }
 
@@ -69,6 +72,8 @@ int neat_coev_params_check(const neat_coev_params *cp, const char **field)
         bad = "first_opponents";
     else if (cp->compare_configs == 0 || cp->compare_configs > NEAT_COEV_MAX_CONFIGS)
         bad = "compare_configs";
+    else if (cp->random_fitness != 0 && cp->random_fitness != 1)
+        bad = "random_fitness";
     if (field != NULL)
         *field = bad;
     return bad ? NEAT_E_PARAM : NEAT_OK;
@@ -103,6 +108,7 @@ void neat_coev_free(neat_coev *c)
         neat_glist_free(&c->champs[i], &a);
     }
     neat_genome_free(&c->champion, &a);
+    neat_genome_free(&c->start, &a);
     for (i = 0; i < c->n_dom; i++)
         neat_dom_free(&c->dom[i], &a);
     neat_mem_free(&a, c->dom, (size_t)c->cap_dom * sizeof *c->dom);
@@ -119,32 +125,44 @@ static int neat_coev_alloc(neat_coev **out, const neat_alloc *alloc)
     if (alloc != NULL)
         c->a = *alloc;
     neat_genome_init(&c->champion);
+    neat_genome_init(&c->start);
     *out = c;
     return NEAT_OK;
 }
 
-int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp, uint64_t seed,
-                     const neat_alloc *alloc)
+int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp, const neat_start *start,
+                     uint64_t seed, const neat_alloc *alloc)
 {
     neat_coev *c;
+    neat_start st;
     const char *field;
     uint32_t i;
     int err;
     if (out == NULL || p == NULL || cp == NULL)
         return NEAT_E_ARG;
     *out = NULL;
-    if (neat_coev_params_check(cp, &field) != NEAT_OK || neat_params_check(p, &field) != NEAT_OK)
+    if (neat_coev_params_check(cp, &field) != NEAT_OK || neat_params_check(p, &field) != NEAT_OK ||
+        p->pop_stagnation != 0)
         return NEAT_E_PARAM;
     err = neat_coev_alloc(&c, alloc);
     if (err)
         return err;
     c->cp = *cp;
     c->seed = seed;
+    if (start != NULL && start->genome != NULL) {
+        err = neat_genome_copy(&c->start, start->genome, &c->a);
+        st = *start;
+    } else {
+        /* the genome neat_pop_create would build for a NULL start */
+        err = neat_genome_minimal(&c->start, p->n_inputs, p->n_outputs, &c->a);
+        st.genome = &c->start;
+        st.keep_weights = 0;
+    }
     for (i = 0; i < 2 && !err; i++) {
         uint64_t keys[2];
         keys[0] = NEAT_TAG_POP;
         keys[1] = i;
-        err = neat_pop_create(&c->pop[i], p, NULL, neat_seed_derive(seed, keys, 2), alloc);
+        err = neat_pop_create(&c->pop[i], p, &st, neat_seed_derive(seed, keys, 2), alloc);
     }
     if (err) {
         neat_coev_free(c);
@@ -157,6 +175,11 @@ int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_para
 uint32_t neat_coev_generation(const neat_coev *c)
 {
     return c->generation;
+}
+
+const neat_genome *neat_coev_start(const neat_coev *c)
+{
+    return &c->start;
 }
 
 uint64_t neat_coev_seed(const neat_coev *c)
@@ -234,7 +257,8 @@ int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_par
     if (c == NULL || p == NULL || cp == NULL)
         return NEAT_E_ARG;
     old = *neat_pop_params(c->pop[0]);
-    if (neat_coev_params_check(cp, &field) != NEAT_OK || !neat_coev_kept_fit(c, p->max_nodes))
+    if (neat_coev_params_check(cp, &field) != NEAT_OK || !neat_coev_kept_fit(c, p->max_nodes) ||
+        p->pop_stagnation != 0 || c->start.n_nodes > p->max_nodes)
         return NEAT_E_PARAM;
     err = neat_pop_set_params(c->pop[0], p);
     if (!err) {
@@ -261,6 +285,19 @@ static int neat_reserve_games(neat_coev *c, uint64_t n)
         return NEAT_E_NOMEM;
     c->games = (neat_game *)p;
     c->cap_games = (uint32_t)n;
+    return NEAT_OK;
+}
+
+/* The games played, or with random_fitness their coins tossed. */
+static int neat_coev_play(const neat_coev *c, neat_play_fn play, void *ud, neat_game *games, size_t n)
+{
+    size_t k;
+    if (!c->cp.random_fitness)
+        return play(ud, games, n);
+    for (k = 0; k < n; k++) {
+        uint64_t tag = NEAT_TAG_COIN;
+        games[k].result = (int8_t)((neat_seed_derive(games[k].seed, &tag, 1) & 1u) ? 1 : -1);
+    }
     return NEAT_OK;
 }
 
@@ -311,7 +348,7 @@ static int neat_compare(neat_coev *c, const neat_genome *x, const neat_genome *y
         gm->seed = neat_seed_derive(c->seed, keys, 4);
         gm->result = 0;
     }
-    err = play(ud, c->games, n);
+    err = neat_coev_play(c, play, ud, c->games, n);
     if (err)
         return err;
     *wx = *wy = 0;
@@ -356,11 +393,18 @@ static void neat_pop_report(const neat_pop *pop, const uint32_t *wins, uint64_t 
 {
     uint32_t i, size = neat_pop_size(pop), best = 0;
     double sum = 0, hid = 0, con = 0;
+    r->min_hidden = r->min_conns = UINT32_MAX;
+    r->max_hidden = r->max_conns = 0;
     for (i = 0; i < size; i++) {
         const neat_genome *g = neat_pop_genome(pop, i);
+        uint32_t gh = neat_genome_hidden_count(g), gc = neat_genome_enabled_count(g);
         sum += wins[i];
-        hid += neat_genome_hidden_count(g);
-        con += neat_genome_enabled_count(g);
+        hid += gh;
+        con += gc;
+        r->min_hidden = gh < r->min_hidden ? gh : r->min_hidden;
+        r->max_hidden = gh > r->max_hidden ? gh : r->max_hidden;
+        r->min_conns = gc < r->min_conns ? gc : r->min_conns;
+        r->max_conns = gc > r->max_conns ? gc : r->max_conns;
         if (wins[i] > wins[best])
             best = i;
     }
@@ -455,7 +499,7 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
                     gm->seed = neat_seed_derive(c->seed, keys, 6);
                     gm->result = 0;
                 }
-    err = play(ud, c->games, n);
+    err = neat_coev_play(c, play, ud, c->games, n);
     if (err)
         return err;
     r.games = n;
@@ -645,6 +689,7 @@ int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len)
     neat_put_u32(&w, c->cp.hof_opponents);
     neat_put_u32(&w, c->cp.first_opponents);
     neat_put_u32(&w, c->cp.compare_configs);
+    neat_put_u32(&w, (uint32_t)c->cp.random_fitness);
     for (i = 0; i < 2; i++) {
         uint8_t *pb = NULL;
         size_t pl = 0;
@@ -657,6 +702,7 @@ int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len)
         neat_put(&w, pb, pl);
         neat_pop_buf_free(c->pop[i], pb, pl);
     }
+    neat_put_genome(&w, &c->start);
     for (i = 0; i < 2; i++) {
         neat_put_glist(&w, &c->hof[i]);
         neat_put_glist(&w, &c->champs[i]);
@@ -755,6 +801,10 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
         c->cp.hof_opponents = neat_get_u32(&r);
         c->cp.first_opponents = neat_get_u32(&r);
         c->cp.compare_configs = neat_get_u32(&r);
+        {
+            uint32_t rf = neat_get_u32(&r);
+            c->cp.random_fitness = rf <= 1u ? (int)rf : 2; /* 2: refused just below */
+        }
         if (!r.err && neat_coev_params_check(&c->cp, &field) != NEAT_OK) {
             r.off = 20;
             neat_fail(&r, NEAT_E_FORMAT);
@@ -778,8 +828,16 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
             neat_fail(&r, NEAT_E_FORMAT);
         }
     }
-    if (!r.err)
+    if (!r.err) {
+        size_t at = r.off;
         pp = neat_pop_params(c->pop[0]);
+        if (pp->pop_stagnation != 0 || neat_pop_params(c->pop[1])->pop_stagnation != 0) {
+            r.off = at;
+            neat_fail(&r, NEAT_E_FORMAT); /* a rule coevolution never applies */
+        }
+        if (!r.err)
+            neat_get_genome(&r, &c->start, pp, &c->a);
+    }
     for (i = 0; i < 2 && !r.err; i++) {
         size_t at = r.off;
         neat_get_glist(&r, &c->hof[i], c->generation, pp, &c->a);

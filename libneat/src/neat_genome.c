@@ -148,11 +148,14 @@ int neat_genome_minimal(neat_genome *g, uint32_t n_in, uint32_t n_out, const nea
     return err;
 }
 
-int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_in, uint32_t n_out, uint32_t n_hid, const neat_alloc *a)
+int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_in, uint32_t n_out, uint32_t n_hid, int direct,
+                                 const neat_alloc *a)
 {
     uint32_t h, k, s, o, innov = 0, first_hid = n_in + n_out + 1;
     int err;
     neat_genome_init(g);
+    if (direct != NEAT_DIRECT_INPUTS && direct != NEAT_DIRECT_BIAS)
+        return NEAT_E_ARG;
     err = neat_genome_io(g, n_in, n_out, a);
     for (h = 0; !err && h < n_hid; h++)
         err = neat_genome_add_node(g, first_hid + h, NEAT_NODE_HIDDEN, a);
@@ -166,7 +169,7 @@ int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_in, uint32_t n_out, 
         for (h = 0; !err && h < n_hid; h++)
             err = neat_genome_add_conn(g, first_hid + h, n_in + 1 + o, 0.0, innov++, 1, a);
     for (o = 0; !err && o < n_out; o++)
-        for (s = 0; !err && s <= n_in; s++)
+        for (s = 0; !err && s <= (direct == NEAT_DIRECT_BIAS ? 0u : n_in); s++)
             err = neat_genome_add_conn(g, s, n_in + 1 + o, 0.0, innov++, 1, a);
     if (err)
         neat_genome_free(g, a);

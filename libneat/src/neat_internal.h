@@ -85,7 +85,8 @@ struct neat_pop {
     neat_rng rng;
     uint32_t generation;
     neat_innovs iv;
-    double delta_t;
+    double delta_t;       /* the next speciation's threshold */
+    double delta_t_used;  /* the threshold the current generation was speciated with */
     neat_genome *genomes; /* [p.pop_size] */
     neat_species *species;
     uint32_t n_species, cap_species;

@@ -280,6 +280,11 @@ int neat_pop_species(const neat_pop *pop, uint32_t k, neat_species_info *info)
 
 double neat_pop_delta_t(const neat_pop *pop)
 {
+    return pop->delta_t_used;
+}
+
+double neat_pop_next_delta_t(const neat_pop *pop)
+{
     return pop->delta_t;
 }
 

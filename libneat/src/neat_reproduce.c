@@ -34,11 +34,14 @@ static void neat_mark_eligible(neat_pop *pop, uint32_t *since_pop)
         }
     }
     /* The whole population stagnant: only the two best species breed (the
-     * C++ release's rule), then the counter starts again. */
+     * C++ release's rule), then the counter starts again. The species rules
+     * below do not apply then: they could bar the second of the two (an old
+     * worst species), leaving every offspring to one. */
     if (pop->p.pop_stagnation > 0 && *since_pop >= pop->p.pop_stagnation && pop->n_species > 2) {
         for (k = 0; k < pop->n_species; k++)
             pop->species[k].eligible = k == top0 || k == top1;
         *since_pop = 0;
+        return;
     }
     if (pop->p.stagnation_rule == NEAT_STAGNATION_IMPROVEMENT) {
         /* 2002 paper: a species not improved for dropoff_age generations

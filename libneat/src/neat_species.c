@@ -124,6 +124,7 @@ void neat_speciate_commit(neat_pop *pop, neat_spec_plan *plan)
             pop->species[kept++] = pop->species[k];
     }
     pop->n_species = kept;
+    pop->delta_t_used = pop->delta_t;
     if (pop->p.target_species > 0) {
         if (pop->n_species > pop->p.target_species)
             pop->delta_t += pop->p.delta_t_step;

@@ -26,10 +26,11 @@ static inline void fz_fix_crc(uint8_t *p, size_t len)
 }
 
 /* A coevolution checkpoint: both embedded population checkpoints (at byte
- * 40: length, bytes; then the second), then the whole. */
+ * 44, after magic, version, seed, generation and the 5 protocol words:
+ * length, bytes; then the second), then the whole. */
 static inline void fz_fix_coev_crc(uint8_t *p, size_t len)
 {
-    size_t off = 40;
+    size_t off = 44;
     int k;
     for (k = 0; k < 2; k++) {
         uint32_t n;

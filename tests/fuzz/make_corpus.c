@@ -173,7 +173,7 @@ int main(int argc, char **argv)
 
     /* recurrent: 3 sensors, 2 outputs, 2 fully recurrent hidden nodes; the
      * invalid seeds below are variants of it */
-    err |= neat_genome_recurrent_hidden(&g, 3, 2, 2, NULL);
+    err |= neat_genome_recurrent_hidden(&g, 3, 2, 2, NEAT_DIRECT_INPUTS, NULL);
     for (i = 0; i < g.n_conns; i++)
         g.conns[i].weight = mc_weight(&seed, 3.0);
     err |= mc_blob(dir, "recurrent.blob", &g, 3, 2, &len);

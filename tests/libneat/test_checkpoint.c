@@ -304,7 +304,7 @@ static void test_bad_magic(void **state)
 
 static void test_bad_version(void **state)
 {
-    static const uint8_t versions[][4] = {{0, 0, 0, 0}, {2, 0, 0, 0}, {1, 0, 0, 1}, {0xFF, 0xFF, 0xFF, 0xFF}};
+    static const uint8_t versions[][4] = {{0, 0, 0, 0}, {1, 0, 0, 0}, {3, 0, 0, 0}, {2, 0, 0, 1}};
     neat_pop *pop = evolved_pop(10, 1, 35), *out = NULL;
     uint8_t *buf;
     size_t len, off, k;

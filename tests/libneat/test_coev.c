@@ -343,6 +343,7 @@ static neat_params coev_neat_params(uint32_t pop_size)
     p.add_node_prob = 0.1;
     p.add_conn_prob = 0.3;
     p.target_species = 4;
+    p.pop_stagnation = 0; /* refused in coevolution */
     return p;
 }
 
@@ -357,7 +358,7 @@ static neat_coev *coev_new(uint32_t pop_size, const neat_coev_params *cp, uint64
 {
     neat_params p = coev_neat_params(pop_size);
     neat_coev *c = NULL;
-    assert_int_equal(neat_coev_create(&c, &p, cp, seed, a), NEAT_OK);
+    assert_int_equal(neat_coev_create(&c, &p, cp, NULL, seed, a), NEAT_OK);
     assert_non_null(c);
     return c;
 }
@@ -719,7 +720,7 @@ static neat_coev *tiny_coev(uint64_t seed, uint8_t **buf, size_t *len)
     p.n_outputs = 1;
     p.add_node_prob = 0.1;
     p.target_species = 2;
-    assert_int_equal(neat_coev_create(&c, &p, &cp, seed, NULL), NEAT_OK);
+    assert_int_equal(neat_coev_create(&c, &p, &cp, NULL, seed, NULL), NEAT_OK);
     ctx_init(&x, c);
     x.script = s0;
     x.n_script = 1;
@@ -1017,7 +1018,7 @@ static void test_alloc_failure_create_load(void **state)
     for (n = 1; !done; n++) {
         c = NULL;
         k.fail_at = k.calls + n;
-        err = neat_coev_create(&c, &p, &cp, 2, &a);
+        err = neat_coev_create(&c, &p, &cp, NULL, 2, &a);
         k.fail_at = 0;
         if (err == NEAT_OK) {
             done = 1;
@@ -1203,7 +1204,7 @@ static void test_set_params_max_nodes(void **state)
         p.add_node_prob = 0.1;
         p.n_inputs = 1;
         p.n_outputs = 1;
-        assert_int_equal(neat_coev_create(&c, &p, &cp, seed, NULL), NEAT_OK);
+        assert_int_equal(neat_coev_create(&c, &p, &cp, NULL, seed, NULL), NEAT_OK);
         for (g = 0; g < 12 && !found; g++) {
             uint32_t m_pop = 0, m_kept = 0, q, i;
             steps(c, 1);
@@ -1254,7 +1255,7 @@ static void test_create_and_params_check(void **state)
     cp.first_opponents = 0;
     assert_int_equal(neat_coev_params_check(&cp, &field), NEAT_E_PARAM);
     assert_string_equal(field, "first_opponents");
-    assert_int_equal(neat_coev_create(&c, &p, &cp, 1, NULL), NEAT_E_PARAM);
+    assert_int_equal(neat_coev_create(&c, &p, &cp, NULL, 1, NULL), NEAT_E_PARAM);
     assert_null(c);
     cp = neat_coev_params_default();
     cp.species_opponents = 0;
@@ -1268,11 +1269,11 @@ static void test_create_and_params_check(void **state)
     cp.species_opponents = 65; /* more than a step can take */
     assert_int_equal(neat_coev_params_check(&cp, &field), NEAT_E_PARAM);
     assert_string_equal(field, "species_opponents");
-    assert_int_equal(neat_coev_create(&c, &p, &cp, 1, NULL), NEAT_E_PARAM);
+    assert_int_equal(neat_coev_create(&c, &p, &cp, NULL, 1, NULL), NEAT_E_PARAM);
     cp = neat_coev_params_default();
     p.pop_size = 1;
-    assert_int_equal(neat_coev_create(&c, &p, &cp, 1, NULL), NEAT_E_PARAM);
-    assert_int_equal(neat_coev_create(NULL, &p, &cp, 1, NULL), NEAT_E_ARG);
+    assert_int_equal(neat_coev_create(&c, &p, &cp, NULL, 1, NULL), NEAT_E_PARAM);
+    assert_int_equal(neat_coev_create(NULL, &p, &cp, NULL, 1, NULL), NEAT_E_ARG);
     /* only hall-of-fame opponents, or only species champions: both work */
     p.pop_size = 8;
     cp.species_opponents = 0;

@@ -402,7 +402,7 @@ static void test_child_buffer_reused(void **state)
     (void)state;
     build_parents(&p1, &p2, 1.0, 1.0);
     neat_genome_init(&child);
-    assert_int_equal(neat_genome_recurrent_hidden(&child, 3, 1, 10, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&child, 3, 1, 10, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     child.fitness = 9.0;
     child.has_fitness = 1;
     neat_rng_seed(&rng, 7);

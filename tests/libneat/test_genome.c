@@ -94,7 +94,7 @@ static void test_recurrent_hidden_counts(void **state)
         uint32_t n_in = cases[c][0], n_out = cases[c][1], H = cases[c][2], i, h, k, selfs = 0;
         uint32_t first_hid = n_in + n_out + 1;
         neat_genome g;
-        assert_int_equal(neat_genome_recurrent_hidden(&g, n_in, n_out, H, NULL), NEAT_OK);
+        assert_int_equal(neat_genome_recurrent_hidden(&g, n_in, n_out, H, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
         assert_int_equal(g.n_nodes, n_in + 1 + n_out + H);
         assert_int_equal(neat_genome_hidden_count(&g), H);
         assert_true(neat_genome_io_ok(&g, n_in, n_out));
@@ -255,7 +255,7 @@ static void test_copy_is_deep(void **state)
     neat_genome a, b;
     uint32_t i;
     (void)state;
-    assert_int_equal(neat_genome_recurrent_hidden(&a, 2, 1, 2, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&a, 2, 1, 2, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     for (i = 0; i < a.n_conns; i++)
         a.conns[i].weight = 0.25 * i;
     a.fitness = 3.5;
@@ -293,7 +293,7 @@ static void test_copy_into_larger_genome_shrinks_counts(void **state)
 {
     neat_genome big, small;
     (void)state;
-    assert_int_equal(neat_genome_recurrent_hidden(&big, 3, 2, 3, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&big, 3, 2, 3, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     assert_int_equal(neat_genome_minimal(&small, 1, 1, NULL), NEAT_OK);
     assert_int_equal(neat_genome_copy(&big, &small, NULL), NEAT_OK);
     assert_int_equal(big.n_nodes, 3);

@@ -552,7 +552,7 @@ static void test_weight_mutation_clamped(void **state)
     p.weight_init_range = 1.0;
     p.weight_replace_range = 2.5;
     p.weight_perturb_prob = 0.9;
-    assert_int_equal(neat_genome_recurrent_hidden(&g, 3, 2, 3, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&g, 3, 2, 3, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     for (i = 0; i < g.n_conns; i++)
         g.conns[i].weight = (i % 2) ? 3.0 : -3.0;
     w0 = g.conns[0].weight;
@@ -613,7 +613,7 @@ static void test_remove_conn_removes_one_gene(void **state)
     neat_rng r;
     uint32_t i, k;
     (void)state;
-    assert_int_equal(neat_genome_recurrent_hidden(&orig, 2, 1, 2, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&orig, 2, 1, 2, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     for (i = 0; i < orig.n_conns; i++)
         orig.conns[i].weight = 0.01 * i;
     neat_genome_init(&g);
@@ -670,7 +670,7 @@ static void test_remove_conn_until_empty(void **state)
     neat_rng r;
     uint32_t i, k, prev;
     (void)state;
-    assert_int_equal(neat_genome_recurrent_hidden(&g, 2, 2, 3, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&g, 2, 2, 3, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     g.conns[3].enabled = 0;
     neat_rng_seed(&r, 12);
     prev = g.n_conns;

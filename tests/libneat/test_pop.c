@@ -237,7 +237,7 @@ static void test_simplify_mode_only_removes(void **state)
     (void)state;
     p.mode = NEAT_MODE_SIMPLIFY;
     p.add_conn_prob = 0.3; /* removal chance: add_node_prob + add_conn_prob */
-    assert_int_equal(neat_genome_recurrent_hidden(&start, 2, 1, 3, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&start, 2, 1, 3, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     st.genome = &start;
     st.keep_weights = 0;
     assert_int_equal(neat_pop_create(&pop, &p, &st, 11, NULL), NEAT_OK);
@@ -470,7 +470,7 @@ static void test_start_genome_keep_weights(void **state)
     neat_start st;
     uint32_t i, k;
     (void)state;
-    assert_int_equal(neat_genome_recurrent_hidden(&g, 2, 1, 2, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&g, 2, 1, 2, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     for (k = 0; k < g.n_conns; k++)
         g.conns[k].weight = 0.125 * k - 1.0;
     st.genome = &g;

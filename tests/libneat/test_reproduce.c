@@ -429,6 +429,32 @@ static void test_pop_stagnation_two_best_breed(void **state)
     neat_pop_free(pop);
 }
 
+/* The two best breed even when every species is old or stagnant: the
+ * species rules must not then bar the second of them (with only two
+ * eligible, the oldest-worst rule used to take the second away, and the
+ * improvement rule any but the best). */
+static void test_pop_stagnation_old_species(void **state)
+{
+    static const double c[4] = {4.0, 3.0, 2.0, 1.0};
+    neat_pop *pop;
+    uint32_t k, rule;
+    (void)state;
+    for (rule = 0; rule < 2; rule++) {
+        pop = four_species(c, 5, 5);
+        pop->p.stagnation_rule = rule == 0 ? NEAT_STAGNATION_OLDEST_WORST : NEAT_STAGNATION_IMPROVEMENT;
+        pop->p.dropoff_age = 30;
+        for (k = 0; k < 4; k++) {
+            pop->species[k].age = 31 + k;
+            pop->species[k].next_since = 40;
+        }
+        neat_apportion(pop, &pop->since_pop_improved);
+        assert_true(pop->species[0].offspring > 0);
+        assert_true(pop->species[1].offspring > 0);
+        assert_int_equal(pop->species[0].offspring + pop->species[1].offspring, 40);
+        neat_pop_free(pop);
+    }
+}
+
 static void test_pop_stagnation_not_yet(void **state)
 {
     static const double c[4] = {4.0, 3.0, 2.0, 1.0};
@@ -608,6 +634,7 @@ int main(void)
         cmocka_unit_test(test_improvement_rule_factor_scales_share),
         cmocka_unit_test(test_pop_stagnation_two_best_breed),
         cmocka_unit_test(test_pop_stagnation_not_yet),
+        cmocka_unit_test(test_pop_stagnation_old_species),
         cmocka_unit_test(test_elitism_champions_copied_unchanged),
         cmocka_unit_test(test_elitism_needs_more_than_min_size),
         cmocka_unit_test(test_elitism_six_members_keeps_champion),

@@ -231,7 +231,7 @@ static void test_delta_t_up_when_too_many(void **state)
     speciate_weights(pop, layout6);
     /* assigned with the old threshold, then moved: 3 > 2 */
     assert_int_equal(pop->n_species, 3);
-    assert_near(neat_pop_delta_t(pop), 1.3, 1e-12);
+    assert_near(neat_pop_next_delta_t(pop), 1.3, 1e-12);
     neat_pop_free(pop);
 }
 
@@ -243,7 +243,7 @@ static void test_delta_t_down_when_too_few(void **state)
     pop->delta_t = 1.0;
     speciate_weights(pop, layout6);
     assert_int_equal(pop->n_species, 3);
-    assert_near(neat_pop_delta_t(pop), 0.7, 1e-12);
+    assert_near(neat_pop_next_delta_t(pop), 0.7, 1e-12);
     neat_pop_free(pop);
 }
 
@@ -255,7 +255,7 @@ static void test_delta_t_kept_at_target(void **state)
     pop->delta_t = 1.0;
     speciate_weights(pop, layout6);
     assert_int_equal(pop->n_species, 3);
-    assert_true(neat_pop_delta_t(pop) == 1.0);
+    assert_true(neat_pop_next_delta_t(pop) == 1.0);
     neat_pop_free(pop);
 }
 
@@ -266,7 +266,7 @@ static void test_delta_t_fixed_without_target(void **state)
     clear_species(pop);
     pop->delta_t = 1.0;
     speciate_weights(pop, layout6);
-    assert_true(neat_pop_delta_t(pop) == 1.0);
+    assert_true(neat_pop_next_delta_t(pop) == 1.0);
     neat_pop_free(pop);
 }
 
@@ -285,11 +285,11 @@ static void test_delta_t_step_and_floor(void **state)
     for (g = 1; g <= 8; g++) {
         speciate_weights(pop, same);
         assert_int_equal(pop->n_species, 1);
-        assert_near(neat_pop_delta_t(pop), 3.0 - 0.3 * g, 1e-9);
+        assert_near(neat_pop_next_delta_t(pop), 3.0 - 0.3 * g, 1e-9);
     }
     for (g = 0; g < 5; g++) {
         speciate_weights(pop, same);
-        assert_true(neat_pop_delta_t(pop) == 0.5);
+        assert_true(neat_pop_next_delta_t(pop) == 0.5);
     }
     neat_pop_free(pop);
 }
@@ -302,7 +302,7 @@ static void test_delta_t_floor_on_single_step(void **state)
     clear_species(pop);
     pop->delta_t = 1.0;
     speciate_weights(pop, layout6);
-    assert_true(neat_pop_delta_t(pop) == 0.9);
+    assert_true(neat_pop_next_delta_t(pop) == 0.9);
     neat_pop_free(pop);
 }
 

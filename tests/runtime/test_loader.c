@@ -33,7 +33,7 @@ static void ld_sample(ld_blob *s)
 {
     neat_genome g;
     uint32_t i;
-    assert_int_equal(neat_genome_recurrent_hidden(&g, LD_IN, LD_OUT, LD_HID, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&g, LD_IN, LD_OUT, LD_HID, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     assert_int_equal(g.n_conns, LD_CONNS);
     for (i = 0; i < g.n_conns; i++)
         g.conns[i].weight = ((double)((i * 7u) % 13u) - 6.0) * 0.625; /* in [-3.75, 3.75] */

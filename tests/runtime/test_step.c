@@ -219,7 +219,7 @@ static void test_reset_restores_initial_behaviour(void **state)
     uint32_t i, seed;
     int t, pass;
     (void)state;
-    assert_int_equal(neat_genome_recurrent_hidden(&g, 3, 2, 3, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_recurrent_hidden(&g, 3, 2, 3, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
     for (i = 0; i < g.n_conns; i++)
         g.conns[i].weight = ((double)((i * 5u) % 11u) - 5.0) * 0.45;
     st_load(&rt, &g, 3, 2);

@@ -15,7 +15,7 @@ same_run() {
   diff -r "$1/champions" "$2/champions" || { echo "champions differ"; exit 1; }
   cmp "$1/dominance.csv" "$2/dominance.csv" || { echo "dominance.csv differs"; exit 1; }
   cmp "$1/checkpoint.bin" "$2/checkpoint.bin" || { echo "checkpoint differs"; exit 1; }
-  diff <(cut -d, -f1-12 "$1/generations.csv") <(cut -d, -f1-12 "$2/generations.csv") ||
+  diff <(cut -d, -f1-16 "$1/generations.csv") <(cut -d, -f1-16 "$2/generations.csv") ||
     { echo "generations.csv differs"; exit 1; }
   [ "$(ls "$1/champions" | wc -l)" -gt 0 ] || { echo "no champions"; exit 1; }
 }

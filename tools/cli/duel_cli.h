@@ -10,6 +10,9 @@
  * file and the problem (unreadable or invalid blob, out of memory). */
 int duel_dot_blob(FILE *f, const char *path);
 
+/* `inspect` on a run directory or its checkpoint (tools/cli/duel_inspect_run.c): 0, or 2 after one line. */
+int duel_inspect_run(const char *path);
+
 int duel_cmd_play(int argc, char **argv);
 int duel_cmd_run(int argc, char **argv);
 int duel_cmd_resume(int argc, char **argv);

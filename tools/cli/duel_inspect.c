@@ -1,8 +1,9 @@
-/* duel_inspect.c - `duel_evolve inspect BLOB` and `duel_evolve dot BLOB`: a champion blob's nodes and connections as text or Graphviz. */
+/* duel_inspect.c - `duel_evolve inspect BLOB` and `duel_evolve dot BLOB`: a champion blob's nodes and connections as text or Graphviz (a run directory or checkpoint goes to duel_inspect_run.c). */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "duel_cli.h"
 #include "duel_ctrl.h"
@@ -238,6 +239,23 @@ static uint32_t duel_insp_rd32(const uint8_t *p)
 
 /* ---- inspect ------------------------------------------------------------ */
 
+/* A run directory, or a file that starts like a coevolution checkpoint. */
+static int duel_is_checkpoint(const char *path)
+{
+    struct stat st;
+    char magic[8];
+    FILE *f;
+    int yes;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        return 1;
+    f = fopen(path, "rb");
+    if (f == NULL)
+        return 0;
+    yes = fread(magic, 1, 8, f) == 8 && memcmp(magic, "NEATCOEV", 8) == 0;
+    fclose(f);
+    return yes;
+}
+
 int duel_cmd_inspect(int argc, char **argv)
 {
     duel_insp x;
@@ -247,9 +265,11 @@ int duel_cmd_inspect(int argc, char **argv)
     int rc = 0;
 
     if (argc != 1 || argv[0][0] == '-') {
-        fprintf(stderr, "usage: duel_evolve inspect BLOB\n");
+        fprintf(stderr, "usage: duel_evolve inspect BLOB | RUN_DIR | CHECKPOINT\n");
         return 2;
     }
+    if (duel_is_checkpoint(argv[0]))
+        return duel_inspect_run(argv[0]);
     if (duel_insp_open(&x, argv[0]) != 0)
         return 2;
     n = &x.net;

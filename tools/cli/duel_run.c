@@ -172,14 +172,15 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
     /* missing, or left empty by a header write that failed: the header first */
     if ((stat(path, &st) != 0 || st.st_size == 0) &&
         duel_file_append(path, "generation,population,best_fitness,mean_fitness,species,delta_t,mean_hidden,"
-                               "mean_connections,best_hidden,best_connections,games,champion,seconds\n") != 0)
+                               "mean_connections,best_hidden,best_connections,min_hidden,max_hidden,"
+                               "min_connections,max_connections,games,champion,seconds\n") != 0)
         goto fail;
     for (p = 0; p < 2; p++) {
         const neat_coev_pop_report *pr = &rep->pop[p];
-        snprintf(row, sizeof row, "%u,%s,%.0f,%.4f,%u,%.4f,%.4f,%.4f,%u,%u,%llu,%d,%.3f\n", rep->generation,
-                 duel_pop_name(p), pr->best_fitness, pr->mean_fitness, pr->species, pr->delta_t, pr->mean_hidden,
-                 pr->mean_conns, pr->best_hidden, pr->best_conns, (unsigned long long)pr->games,
-                 rep->champion_pop == p, secs);
+        snprintf(row, sizeof row, "%u,%s,%.0f,%.4f,%u,%.4f,%.4f,%.4f,%u,%u,%u,%u,%u,%u,%llu,%d,%.3f\n",
+                 rep->generation, duel_pop_name(p), pr->best_fitness, pr->mean_fitness, pr->species, pr->delta_t,
+                 pr->mean_hidden, pr->mean_conns, pr->best_hidden, pr->best_conns, pr->min_hidden, pr->max_hidden,
+                 pr->min_conns, pr->max_conns, (unsigned long long)pr->games, rep->champion_pop == p, secs);
         if (duel_file_append(path, row) != 0)
             goto fail;
     }
@@ -450,7 +451,7 @@ static int duel_has_history(const char *dir, char *msg, size_t cap)
     return 1;
 }
 
-static int duel_start(duel_run *R)
+static int duel_go(duel_run *R)
 {
     int err = duel_games_create(&R->games, R->threads, &R->cfg.neat);
     if (err) {
@@ -463,12 +464,45 @@ static int duel_start(duel_run *R)
     return err;
 }
 
+/* The two populations from the configuration's start topology. 0, or -1
+ * after one line on stderr (2: the configuration's fault, 1: the machine's). */
+static int duel_create(duel_run *R)
+{
+    char err[DUEL_START_MAX_PATH + 200];
+    neat_genome g;
+    neat_start st;
+    int e;
+    if (duel_start_genome(&R->cfg, &g, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
+    st.genome = &g;
+    st.keep_weights = 0;
+    e = neat_coev_create(&R->coev, &R->cfg.neat, &R->cfg.coev, &st, R->cfg.seed, NULL);
+    neat_genome_free(&g, NULL);
+    if (e) {
+        fprintf(stderr, "duel_evolve: cannot start: %s\n", neat_strerror(e));
+        return 1;
+    }
+    return 0;
+}
+
+/* The start topology in words, for log.txt. */
+static void duel_start_words(const duel_run *R, char *buf, size_t cap)
+{
+    char st[DUEL_START_MAX_PATH + 16];
+    const neat_genome *g = neat_coev_start(R->coev);
+    duel_start_text(&R->cfg.start, st, sizeof st);
+    snprintf(buf, cap, "start %s (%u hidden, %u connections)%s", st, neat_genome_hidden_count(g),
+             neat_genome_enabled_count(g), R->cfg.coev.random_fitness ? ", random fitness" : "");
+}
+
 int duel_cmd_run(int argc, char **argv)
 {
     duel_run R;
     const char *config = NULL;
-    char err[600], path[4200];
-    uint32_t seed = 0, gens = 0;
+    char err[600], path[4200], words[DUEL_START_MAX_PATH + 100], *sets[64];
+    uint32_t seed = 0, gens = 0, n_sets = 0, k;
     int i, c, have_seed = 0, have_gens = 0, e;
     struct stat st;
 
@@ -487,12 +521,14 @@ int duel_cmd_run(int argc, char **argv)
                 return 2;
             have_seed = 1;
             i++;
+        } else if (strcmp(a, "--set") == 0 && v && n_sets < 64) {
+            sets[n_sets++] = argv[++i];
         } else if ((c = duel_common_option(&R, argc, argv, &i, &gens, &have_gens)) != 0) {
             if (c < 0)
                 return 2;
         } else {
             fprintf(stderr, "duel_evolve run: unknown option '%s' (usage: duel_evolve run --config FILE --out DIR "
-                            "[--seed S] [--generations N] [--threads T] [--quiet] [--json] "
+                            "[--set key=value ...] [--seed S] [--generations N] [--threads T] [--quiet] [--json] "
                             "[--record-champion-games])\n", a);
             return 2;
         }
@@ -501,14 +537,29 @@ int duel_cmd_run(int argc, char **argv)
         fprintf(stderr, "duel_evolve run: --config FILE and --out DIR are required\n");
         return 2;
     }
-    if (duel_config_load(&R.cfg, config, err, sizeof err) != 0) {
+    if (duel_config_read(&R.cfg, config, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;
     }
+    for (k = 0; k < n_sets; k++)
+        if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
+            fprintf(stderr, "duel_evolve: --set %s: %s\n", sets[k], err);
+            return 2;
+        }
     if (have_seed)
         R.cfg.seed = seed;
     if (have_gens)
         R.cfg.generations = gens;
+    if (duel_config_check(&R.cfg, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s: %s\n", n_sets > 0 ? "the configuration with its --set overrides" : config,
+                err);
+        return 2;
+    }
+    /* a bad start topology (an unreadable blob) is refused before anything is made */
+    if ((e = duel_create(&R)) != 0)
+        return e;
+    neat_coev_free(R.coev);
+    R.coev = NULL;
     duel_path(path, sizeof path, R.dir, "champions");
     if (duel_mkdir(R.dir) != 0 || duel_mkdir(path) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R.dir, strerror(errno));
@@ -543,14 +594,40 @@ int duel_cmd_run(int argc, char **argv)
     }
     if (duel_write_config(&R) != 0)
         return 1;
-    e = neat_coev_create(&R.coev, &R.cfg.neat, &R.cfg.coev, R.cfg.seed, NULL);
-    if (e) {
-        fprintf(stderr, "duel_evolve: cannot start: %s\n", neat_strerror(e));
-        return 1;
-    }
+    if ((e = duel_create(&R)) != 0)
+        return e;
     duel_log(&R, "run: config %s, seed %u, %u generations, %u threads", config, R.cfg.seed, R.cfg.generations,
              R.threads);
-    return duel_start(&R);
+    for (k = 0; k < n_sets; k++)
+        duel_log(&R, "run: override %s", sets[k]);
+    duel_start_words(&R, words, sizeof words);
+    duel_log(&R, "run: %s", words);
+    return duel_go(&R);
+}
+
+/* config.ini's start topology is the one the checkpoint carries. A blob
+ * that is no longer there is not needed: the checkpoint has its network. */
+static int duel_check_start(duel_run *R, const char *ckpt)
+{
+    char err[DUEL_START_MAX_PATH + 200], st[DUEL_START_MAX_PATH + 16];
+    const neat_genome *have = neat_coev_start(R->coev);
+    neat_genome want;
+    int same;
+    if (R->cfg.start.kind == DUEL_START_BLOB && access(R->cfg.start.path, F_OK) != 0)
+        return 0;
+    if (duel_start_genome(&R->cfg, &want, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return -1;
+    }
+    same = duel_same_topology(have, &want);
+    neat_genome_free(&want, NULL);
+    if (!same) {
+        duel_start_text(&R->cfg.start, st, sizeof st);
+        fprintf(stderr, "duel_evolve: %s: started from %u hidden nodes and %u connections, but config.ini says "
+                        "start = %s\n", ckpt, neat_genome_hidden_count(have), neat_genome_enabled_count(have), st);
+        return -1;
+    }
+    return 0;
 }
 
 int duel_cmd_resume(int argc, char **argv)
@@ -609,6 +686,10 @@ int duel_cmd_resume(int argc, char **argv)
         fprintf(stderr, "duel_evolve: --set seed: a run's seed cannot change; start a new run instead\n");
         return 2;
     }
+    if (memcmp(&R.cfg.start, &before.start, sizeof before.start) != 0) {
+        fprintf(stderr, "duel_evolve: --set start: a run's start topology cannot change; start a new run instead\n");
+        return 2;
+    }
     if (duel_config_check(&R.cfg, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;
@@ -627,7 +708,8 @@ int duel_cmd_resume(int argc, char **argv)
                             "(restore it from a backup, or start a new run)\n", path, err);
             return 2;
         }
-        e = neat_coev_create(&R.coev, &R.cfg.neat, &R.cfg.coev, R.cfg.seed, NULL);
+        if ((e = duel_create(&R)) != 0)
+            return e;
     } else {
         e = neat_coev_load(&R.coev, buf, len, NULL, &off);
         free(buf);
@@ -638,6 +720,10 @@ int duel_cmd_resume(int argc, char **argv)
         if (neat_coev_seed(R.coev) != R.cfg.seed) {
             fprintf(stderr, "duel_evolve: %s: seed %llu, but config.ini says %u\n", path,
                     (unsigned long long)neat_coev_seed(R.coev), R.cfg.seed);
+            neat_coev_free(R.coev);
+            return 2;
+        }
+        if (duel_check_start(&R, path) != 0) {
             neat_coev_free(R.coev);
             return 2;
         }
@@ -680,29 +766,33 @@ int duel_cmd_resume(int argc, char **argv)
     duel_log(&R, "resume at generation %u of %u, %u threads", g, R.cfg.generations, R.threads);
     if (!R.quiet)
         fprintf(stderr, "resuming %s at generation %u of %u\n", R.dir, g, R.cfg.generations);
-    return duel_start(&R);
+    return duel_go(&R);
 }
 
 int duel_cmd_config(int argc, char **argv)
 {
     duel_config cfg;
     char err[600];
-    int i, dump = 0;
+    const char *last = NULL; /* the last file or override: whose the final check's complaint is */
+    int i, dump = 0, from_set = 0;
     duel_config_default(&cfg);
     for (i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--dump") == 0) {
             dump = 1;
         } else if (strcmp(argv[i], "--config") == 0 && i + 1 < argc) {
-            if (duel_config_load(&cfg, argv[++i], err, sizeof err) != 0) {
+            if (duel_config_read(&cfg, argv[++i], err, sizeof err) != 0) {
                 fprintf(stderr, "duel_evolve: %s\n", err);
                 return 2;
             }
+            last = argv[i];
+            from_set = 0;
         } else if (strcmp(argv[i], "--set") == 0 && i + 1 < argc) {
-            if (duel_config_set(&cfg, argv[++i], err, sizeof err) != 0 ||
-                duel_config_check(&cfg, err, sizeof err) != 0) {
+            if (duel_config_set(&cfg, argv[++i], err, sizeof err) != 0) {
                 fprintf(stderr, "duel_evolve: --set %s: %s\n", argv[i], err);
                 return 2;
             }
+            last = argv[i];
+            from_set = 1;
         } else {
             fprintf(stderr, "duel_evolve config: unknown option '%s' (usage: duel_evolve config --dump [--config "
                             "FILE] [--set key=value ...])\n", argv[i]);
@@ -711,6 +801,11 @@ int duel_cmd_config(int argc, char **argv)
     }
     if (!dump) {
         fprintf(stderr, "duel_evolve config: nothing to do (try --dump)\n");
+        return 2;
+    }
+    if (duel_config_check(&cfg, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s%s%s%s\n", last && from_set ? "--set " : "", last ? last : "",
+                last ? ": " : "", err);
         return 2;
     }
     duel_config_dump(stdout, &cfg);

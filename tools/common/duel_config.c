@@ -1,10 +1,13 @@
 /* duel_config.c - the run configuration's INI sections, keys, defaults, overrides and dump. */
+#include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "duel_config.h"
 #include "duel.h"
 #include "neat_config.h"
 #include "neat_ini.h"
+#include "duel_files.h"
 
 #define RUN_KEY(name, type, lo, hi) {#name, type, offsetof(duel_config, name), lo, hi, NULL}
 #define COEV_KEY(name, lo, hi) {#name, NEAT_CFG_U32, offsetof(neat_coev_params, name), lo, hi, NULL}
@@ -18,6 +21,7 @@ static const neat_cfg_key duel_coev_keys[] = {
     COEV_KEY(hof_opponents, 0, 1000),
     COEV_KEY(first_opponents, 1, 1000),
     COEV_KEY(compare_configs, 1, DUEL_CONFIGS),
+    {"random_fitness", NEAT_CFG_BOOL, offsetof(neat_coev_params, random_fitness), 0, 1, NULL},
 };
 #define N_RUN (sizeof duel_run_keys / sizeof duel_run_keys[0])
 #define N_COEV (sizeof duel_coev_keys / sizeof duel_coev_keys[0])
@@ -31,6 +35,123 @@ void duel_config_default(duel_config *cfg)
     cfg->neat = neat_params_default();
     cfg->neat.n_inputs = DUEL_N_INPUTS - 1;
     cfg->neat.n_outputs = DUEL_N_OUTPUTS;
+    /* coevolution cannot use the whole-population stagnation rule (neat_coev.h) */
+    cfg->neat.pop_stagnation = 0;
+    cfg->start.kind = DUEL_START_MINIMAL;
+}
+
+/* "minimal", "hidden:H:inputs", "hidden:H:bias" or "blob:PATH". */
+static int duel_start_parse(duel_start *st, const char *v, char *err, size_t err_len)
+{
+    static const char expect[] = "expected minimal, hidden:H:inputs, hidden:H:bias or blob:PATH";
+    if (strcmp(v, "minimal") == 0) {
+        memset(st, 0, sizeof *st);
+        st->kind = DUEL_START_MINIMAL;
+        return 0;
+    }
+    if (strncmp(v, "hidden:", 7) == 0) {
+        char *end;
+        unsigned long h;
+        errno = 0;
+        h = strtoul(v + 7, &end, 10);
+        if (v[7] < '0' || v[7] > '9' || errno || h < 1 || h > DUEL_START_MAX_HIDDEN || *end != ':' ||
+            (strcmp(end + 1, "inputs") != 0 && strcmp(end + 1, "bias") != 0)) {
+            snprintf(err, err_len, "start = '%s': hidden:H:inputs or hidden:H:bias with H in 1..%d", v,
+                     DUEL_START_MAX_HIDDEN);
+            return -1;
+        }
+        memset(st, 0, sizeof *st);
+        st->kind = DUEL_START_HIDDEN;
+        st->hidden = (uint32_t)h;
+        st->direct = strcmp(end + 1, "bias") == 0 ? NEAT_DIRECT_BIAS : NEAT_DIRECT_INPUTS;
+        return 0;
+    }
+    if (strncmp(v, "blob:", 5) == 0 || strcmp(v, "blob") == 0) {
+        /* "blob" alone: a preset's placeholder, refused by duel_config_check unless a path replaces it */
+        if (v[4] != '\0' && strlen(v + 5) >= DUEL_START_MAX_PATH) {
+            snprintf(err, err_len, "start: a blob path of %zu characters (at most %d)", strlen(v + 5),
+                     DUEL_START_MAX_PATH - 1);
+            return -1;
+        }
+        memset(st, 0, sizeof *st);
+        st->kind = DUEL_START_BLOB;
+        if (v[4] != '\0')
+            strcpy(st->path, v + 5);
+        return 0;
+    }
+    snprintf(err, err_len, "start = '%s': %s", v, expect);
+    return -1;
+}
+
+void duel_start_text(const duel_start *st, char *buf, size_t cap)
+{
+    if (st->kind == DUEL_START_HIDDEN)
+        snprintf(buf, cap, "hidden:%u:%s", st->hidden, st->direct == NEAT_DIRECT_BIAS ? "bias" : "inputs");
+    else if (st->kind == DUEL_START_BLOB && st->path[0] != '\0')
+        snprintf(buf, cap, "blob:%s", st->path);
+    else if (st->kind == DUEL_START_BLOB)
+        snprintf(buf, cap, "blob");
+    else
+        snprintf(buf, cap, "minimal");
+}
+
+int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t err_len)
+{
+    const neat_params *p = &cfg->neat;
+    uint8_t *blob = NULL;
+    size_t len = 0;
+    int e;
+    neat_genome_init(g);
+    if (cfg->start.kind == DUEL_START_MINIMAL)
+        e = neat_genome_minimal(g, p->n_inputs, p->n_outputs, NULL);
+    else if (cfg->start.kind == DUEL_START_HIDDEN)
+        e = neat_genome_recurrent_hidden(g, p->n_inputs, p->n_outputs, cfg->start.hidden, cfg->start.direct, NULL);
+    else {
+        /* a blob is a few KB; a much larger file is not one */
+        if (duel_file_read(cfg->start.path, 1u << 20, &blob, &len) != 0) {
+            snprintf(err, err_len, "%s: cannot read the start blob: %s", cfg->start.path,
+                     errno == EFBIG ? "larger than 1 MB" : strerror(errno));
+            return -1;
+        }
+        e = neat_genome_from_blob(g, blob, len, NULL);
+        free(blob);
+        if (e == NEAT_E_FORMAT) {
+            snprintf(err, err_len, "%s: not a valid champion blob (duel_evolve inspect tells why)", cfg->start.path);
+            return -1;
+        }
+        if (!e && neat_genome_hidden_count(g) + p->n_inputs + 1 + p->n_outputs != g->n_nodes) {
+            snprintf(err, err_len, "%s: a network of %u nodes with %u hidden: not the duel's %u inputs and %u outputs",
+                     cfg->start.path, g->n_nodes, neat_genome_hidden_count(g), p->n_inputs + 1, p->n_outputs);
+            neat_genome_free(g, NULL);
+            return -1;
+        }
+    }
+    if (!e && g->n_nodes > p->max_nodes) {
+        snprintf(err, err_len, "start: %u nodes, more than max_nodes = %u", g->n_nodes, p->max_nodes);
+        neat_genome_free(g, NULL);
+        return -1;
+    }
+    if (e) {
+        snprintf(err, err_len, "start: %s", neat_strerror(e));
+        neat_genome_free(g, NULL);
+        return -1;
+    }
+    return 0;
+}
+
+int duel_same_topology(const neat_genome *a, const neat_genome *b)
+{
+    uint32_t i;
+    if (a->n_nodes != b->n_nodes || a->n_conns != b->n_conns)
+        return 0;
+    for (i = 0; i < a->n_nodes; i++)
+        if (a->nodes[i].id != b->nodes[i].id || a->nodes[i].type != b->nodes[i].type)
+            return 0;
+    for (i = 0; i < a->n_conns; i++)
+        if (a->conns[i].in != b->conns[i].in || a->conns[i].out != b->conns[i].out ||
+            a->conns[i].innov != b->conns[i].innov || a->conns[i].enabled != b->conns[i].enabled)
+            return 0;
+    return 1;
 }
 
 static int duel_has_key(const neat_cfg_key *keys, size_t n, const char *name)
@@ -49,7 +170,7 @@ static const char *duel_key_home(const char *name)
         return "run";
     if (duel_has_key(duel_coev_keys, N_COEV, name))
         return "coevolution";
-    if (neat_config_has_key(name))
+    if (neat_config_has_key(name) || strcmp(name, "start") == 0)
         return "neat";
     return NULL;
 }
@@ -62,6 +183,8 @@ static int duel_set_in(duel_config *cfg, const char *section, const char *name, 
         r = neat_config_set_in(duel_run_keys, N_RUN, cfg, name, value, err, err_len);
     else if (strcmp(section, "coevolution") == 0)
         r = neat_config_set_in(duel_coev_keys, N_COEV, &cfg->coev, name, value, err, err_len);
+    else if (strcmp(section, "neat") == 0 && strcmp(name, "start") == 0)
+        return duel_start_parse(&cfg->start, value, err, err_len);
     else if (strcmp(section, "neat") == 0)
         r = neat_config_set(&cfg->neat, name, value, err, err_len);
     else {
@@ -94,6 +217,22 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
         snprintf(err, err_len, "[neat] %s out of range", field);
         return -1;
     }
+    if (cfg->start.kind == DUEL_START_BLOB && cfg->start.path[0] == '\0') {
+        snprintf(err, err_len, "[neat] start = blob needs the champion's path: blob:PATH (e.g. --set "
+                               "start=blob:runs/c1/champions/gen-00123.blob)");
+        return -1;
+    }
+    if (cfg->neat.pop_stagnation != 0) {
+        snprintf(err, err_len, "[neat] pop_stagnation must be 0 in coevolution: the rule needs an absolute fitness, "
+                               "and a count of wins against changing opponents never improves (docs/parameters.md)");
+        return -1;
+    }
+    if (cfg->start.kind == DUEL_START_HIDDEN && cfg->neat.n_inputs + 1 + cfg->neat.n_outputs + cfg->start.hidden >
+                                                    cfg->neat.max_nodes) {
+        snprintf(err, err_len, "[neat] start = hidden:%u: %u nodes, more than max_nodes = %u", cfg->start.hidden,
+                 cfg->neat.n_inputs + 1 + cfg->neat.n_outputs + cfg->start.hidden, cfg->neat.max_nodes);
+        return -1;
+    }
     if (neat_coev_params_check(&cfg->coev, &field) != NEAT_OK) {
         snprintf(err, err_len, "[coevolution] %s out of range", field);
         return -1;
@@ -101,10 +240,15 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
     return 0;
 }
 
+int duel_config_read(duel_config *cfg, const char *path, char *err, size_t err_len)
+{
+    return neat_ini_parse_file(path, duel_ini_handler, cfg, err, err_len) != 0 ? -1 : 0;
+}
+
 int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_len)
 {
     char msg[400];
-    if (neat_ini_parse_file(path, duel_ini_handler, cfg, err, err_len) != 0)
+    if (duel_config_read(cfg, path, err, err_len) != 0)
         return -1;
     if (duel_config_check(cfg, msg, sizeof msg) != 0) {
         snprintf(err, err_len, "%s: %s", path, msg);
@@ -161,5 +305,10 @@ void duel_config_dump(FILE *out, const duel_config *cfg)
     fprintf(out, "\n[coevolution]\n");
     neat_config_dump_keys(out, duel_coev_keys, N_COEV, &cfg->coev);
     fprintf(out, "\n[neat]\n");
+    {
+        char st[DUEL_START_MAX_PATH + 16];
+        duel_start_text(&cfg->start, st, sizeof st);
+        fprintf(out, "start = %s\n", st);
+    }
     neat_config_dump(out, &cfg->neat);
 }

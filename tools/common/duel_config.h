@@ -9,11 +9,28 @@
 #include "neat.h"
 #include "neat_coev.h"
 
+/* [neat] start: the topology both populations start from. */
+enum duel_start_kind {
+    DUEL_START_MINIMAL = 0, /* "minimal": bias and inputs to outputs, 39 connections */
+    DUEL_START_HIDDEN = 1,  /* "hidden:H:inputs" or "hidden:H:bias": H fully recurrent hidden nodes */
+    DUEL_START_BLOB = 2     /* "blob:PATH": a champion blob's network */
+};
+#define DUEL_START_MAX_HIDDEN 240 /* 16 + 240 nodes: the blob format's 256 */
+#define DUEL_START_MAX_PATH 4096
+
+typedef struct duel_start {
+    int kind;                 /* enum duel_start_kind */
+    uint32_t hidden;          /* DUEL_START_HIDDEN: H */
+    int direct;               /* DUEL_START_HIDDEN: enum neat_direct */
+    char path[DUEL_START_MAX_PATH]; /* DUEL_START_BLOB: as given */
+} duel_start;
+
 typedef struct duel_config {
     uint32_t generations; /* [run] generations to play in all */
     uint32_t seed;        /* [run] */
     neat_coev_params coev;
     neat_params neat;
+    duel_start start;     /* [neat] start */
 } duel_config;
 
 /* The paper's values (Appendix A, section 5): 500 generations, seed 1. */
@@ -23,6 +40,9 @@ void duel_config_default(duel_config *cfg);
  * and line ("FILE:LINE: unknown key 'x' (did you mean 'y'?)"); nothing of
  * cfg is to be used then. */
 int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_len);
+/* The same without the final duel_config_check, for a file that --set
+ * overrides will complete (a preset's start = blob placeholder). */
+int duel_config_read(duel_config *cfg, const char *path, char *err, size_t err_len);
 /* The same from len bytes of text, named name in the messages. */
 int duel_config_load_text(duel_config *cfg, const char *name, const char *text, size_t len, char *err,
                           size_t err_len);
@@ -34,6 +54,17 @@ int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t 
 /* Every key of every section, in a form duel_config_load reads back to the
  * same configuration. */
 void duel_config_dump(FILE *out, const duel_config *cfg);
+
+/* The start topology's text, as the INI takes it, into buf. */
+void duel_start_text(const duel_start *st, char *buf, size_t cap);
+
+/* The start topology as a genome for neat_coev_create (a blob is read and
+ * checked here). 0, or -1 with a message in err naming the file. */
+int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t err_len);
+
+/* 1 when a and b have the same nodes and the same connections (endpoints,
+ * innovation, enabled), whatever their weights. */
+int duel_same_topology(const neat_genome *a, const neat_genome *b);
 
 /* The whole configuration is usable (ranges, the duel's 12 sensors and 3
  * outputs). -1 with a message in err. */
