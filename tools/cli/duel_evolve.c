@@ -8,12 +8,14 @@
 
 static void duel_usage(FILE *f)
 {
-    fprintf(f, "usage: duel_evolve run --config FILE --out DIR [--seed S] [--generations N] [--threads T] [--quiet] "
+    fprintf(f, "usage: duel_evolve run --config FILE --out DIR [--set key=value ...] [--seed S] [--generations N] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
                "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
                "       duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
                "       duel_evolve ladder DIR\n"
+               "       duel_evolve compare RUN... --against RUN... [--threads T] [--json FILE] [--csv FILE] "
+               "[--cache FILE]\n"
                "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
                "[--lcm-log FILE.lcm]\n"
                "       duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
@@ -21,7 +23,7 @@ static void duel_usage(FILE *f)
                "[--period-ms N] [--lcm-log FILE.lcm]\n"
                "       duel_evolve log info FILE.lcm\n"
                "       duel_evolve log dump FILE.lcm [--channel C]\n"
-               "       duel_evolve inspect BLOB\n"
+               "       duel_evolve inspect BLOB | RUN_DIR | CHECKPOINT\n"
                "       duel_evolve dot BLOB [-o FILE.dot]\n"
                "       duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [--size 600] "
                "[--every N] [--sensors] [--video FILE.mp4] [--fps 30]\n"
@@ -38,6 +40,7 @@ typedef struct duel_command {
 static const duel_command duel_commands[] = {
     {"run", duel_cmd_run},         {"resume", duel_cmd_resume},   {"config", duel_cmd_config},
     {"ladder", duel_cmd_ladder},   {"play", duel_cmd_play},       {"inspect", duel_cmd_inspect},
+    {"compare", duel_cmd_compare},
     {"dot", duel_cmd_dot},         {"node", duel_cmd_node},       {"log", duel_cmd_log},
     {"render", duel_cmd_render},   {"render-net", duel_cmd_render_net}, {"export", duel_cmd_export},
 };

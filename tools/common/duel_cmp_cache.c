@@ -1,0 +1,200 @@
+/* duel_cmp_cache.c - the comparison cache: a CSV of (blob hash, blob hash, tally) under a header naming the world version. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "duel_cmp_cache.h"
+#include "duel_files.h"
+
+#define DUEL_CMP_HEADER "# duel_evolve compare cache 1, duel world %d: a_hash,b_hash,wins_a,wins_b,draws,timeouts\n"
+#define DUEL_CMP_MAX_FILE ((size_t)1 << 30)
+
+uint64_t duel_blob_hash(const uint8_t *blob, size_t len)
+{
+    uint64_t h = 14695981039346656037ull;
+    size_t i;
+    for (i = 0; i < len; i++) {
+        h ^= blob[i];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+static int duel_cmp_less(uint64_t a1, uint64_t b1, uint64_t a2, uint64_t b2)
+{
+    return a1 < a2 || (a1 == a2 && b1 < b2);
+}
+
+/* The first entry not less than (a, b). */
+static size_t duel_cmp_lower(const duel_cmp_cache *c, uint64_t a, uint64_t b)
+{
+    size_t lo = 0, hi = c->n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (duel_cmp_less(c->e[mid].a, c->e[mid].b, a, b))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t a, uint64_t b)
+{
+    size_t k = duel_cmp_lower(c, a, b);
+    return k < c->n && c->e[k].a == a && c->e[k].b == b ? &c->e[k].tally : NULL;
+}
+
+int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t a, uint64_t b, const duel_tally *t)
+{
+    size_t k = duel_cmp_lower(c, a, b);
+    if (k < c->n && c->e[k].a == a && c->e[k].b == b) {
+        c->e[k].tally = *t;
+        c->dirty = 1;
+        return 0;
+    }
+    if (c->n == c->cap) {
+        size_t cap = c->cap ? 2 * c->cap : 256;
+        duel_cmp_entry *e = (duel_cmp_entry *)realloc(c->e, cap * sizeof *e);
+        if (e == NULL)
+            return -1;
+        c->e = e;
+        c->cap = cap;
+    }
+    memmove(c->e + k + 1, c->e + k, (c->n - k) * sizeof *c->e);
+    c->e[k].a = a;
+    c->e[k].b = b;
+    c->e[k].tally = *t;
+    c->n++;
+    c->dirty = 1;
+    return 0;
+}
+
+/* "hhhh...h" of exactly 16 hex digits */
+static int duel_cmp_hex(const char *s, uint64_t *v)
+{
+    int i;
+    *v = 0;
+    for (i = 0; i < 16; i++) {
+        char ch = s[i];
+        int d = ch >= '0' && ch <= '9' ? ch - '0' : ch >= 'a' && ch <= 'f' ? ch - 'a' + 10 : -1;
+        if (d < 0)
+            return -1;
+        *v = *v << 4 | (uint64_t)d;
+    }
+    return 0;
+}
+
+static int duel_cmp_u32(const char **s, char end, uint32_t *v)
+{
+    const char *p = *s;
+    uint64_t x = 0;
+    if (*p < '0' || *p > '9')
+        return -1;
+    while (*p >= '0' && *p <= '9' && x <= 0xFFFFFFFFu)
+        x = x * 10 + (uint64_t)(*p++ - '0');
+    if (x > 0xFFFFFFFFu || *p != end)
+        return -1;
+    *v = (uint32_t)x;
+    *s = p + 1;
+    return 0;
+}
+
+int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t err_len)
+{
+    char header[200];
+    uint8_t *text;
+    size_t len, at, line = 1;
+    int r;
+
+    memset(c, 0, sizeof *c);
+    snprintf(c->path, sizeof c->path, "%s", path);
+    r = duel_file_read(path, DUEL_CMP_MAX_FILE, &text, &len);
+    if (r != 0) {
+        if (r == -1 && errno == ENOENT)
+            return 0;
+        snprintf(err, err_len, "%s: cannot read: %s", path, errno == EFBIG ? "larger than 1 GB" : strerror(errno));
+        return -1;
+    }
+    snprintf(header, sizeof header, DUEL_CMP_HEADER, DUEL_SPEC_VERSION);
+    if (len < strlen(header) || memcmp(text, header, strlen(header)) != 0) {
+        /* another version of the world or of this file: its results do not hold; start afresh */
+        free(text);
+        c->dirty = 1;
+        return 0;
+    }
+    for (at = strlen(header); at < len; line++) {
+        char row[128];
+        const char *p = row;
+        size_t end = at;
+        uint64_t a, b;
+        duel_tally t;
+        while (end < len && text[end] != '\n')
+            end++;
+        if (end == len) /* a torn last line (the writer died): not an entry */
+            break;
+        if (end - at >= sizeof row || end - at < 34)
+            goto bad;
+        memcpy(row, text + at, end - at);
+        row[end - at] = '\0';
+        if (duel_cmp_hex(p, &a) || p[16] != ',' || duel_cmp_hex(p + 17, &b) || p[33] != ',')
+            goto bad;
+        p += 34;
+        if (duel_cmp_u32(&p, ',', &t.wins_a) || duel_cmp_u32(&p, ',', &t.wins_b) || duel_cmp_u32(&p, ',', &t.draws) ||
+            duel_cmp_u32(&p, '\0', &t.timeouts) || (uint64_t)t.wins_a + t.wins_b + t.draws + t.timeouts !=
+                                                         2u * DUEL_CONFIGS)
+            goto bad;
+        if (duel_cmp_cache_add(c, a, b, &t) != 0) {
+            snprintf(err, err_len, "%s: out of memory", path);
+            free(text);
+            duel_cmp_cache_free(c);
+            return -1;
+        }
+        at = end + 1;
+    }
+    free(text);
+    c->dirty = 0;
+    return 0;
+bad:
+    snprintf(err, err_len, "%s:%zu: not a cache entry (a_hash,b_hash,wins_a,wins_b,draws,timeouts summing to %d): "
+                           "delete the file to rebuild it", path, line + 1, 2 * DUEL_CONFIGS);
+    free(text);
+    duel_cmp_cache_free(c);
+    return -1;
+}
+
+int duel_cmp_cache_save(duel_cmp_cache *c)
+{
+    char *text = NULL;
+    size_t len = 0, k;
+    FILE *mem;
+    int r;
+    if (!c->dirty)
+        return 0;
+    mem = open_memstream(&text, &len);
+    if (mem == NULL)
+        return -1;
+    fprintf(mem, DUEL_CMP_HEADER, DUEL_SPEC_VERSION);
+    for (k = 0; k < c->n; k++)
+        fprintf(mem, "%016" PRIx64 ",%016" PRIx64 ",%u,%u,%u,%u\n", c->e[k].a, c->e[k].b, c->e[k].tally.wins_a,
+                c->e[k].tally.wins_b, c->e[k].tally.draws, c->e[k].tally.timeouts);
+    if (fclose(mem) != 0) {
+        free(text);
+        return -1;
+    }
+    r = duel_file_replace(c->path, text, len);
+    free(text);
+    if (r == 0)
+        c->dirty = 0;
+    return r;
+}
+
+void duel_cmp_cache_free(duel_cmp_cache *c)
+{
+    free(c->e);
+    c->e = NULL;
+    c->n = c->cap = 0;
+}

@@ -1,0 +1,37 @@
+/* duel_cmp_cache.h - finished 288-game comparisons kept in a file, keyed by the hashes of the two blobs, so a repeated or extended compare plays nothing twice. */
+#ifndef DUEL_CMP_CACHE_H
+#define DUEL_CMP_CACHE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "duel.h"
+
+typedef struct duel_cmp_entry {
+    uint64_t a, b; /* duel_blob_hash of the two blobs, a played first-named */
+    duel_tally tally;
+} duel_cmp_entry;
+
+typedef struct duel_cmp_cache {
+    char path[4200];
+    duel_cmp_entry *e; /* sorted by (a, b) */
+    size_t n, cap;
+    int dirty;
+} duel_cmp_cache;
+
+/* 64-bit FNV-1a of the blob's bytes: the key of its comparisons. */
+uint64_t duel_blob_hash(const uint8_t *blob, size_t len);
+
+/* Reads path (missing: an empty cache). A file written for another world
+ * version is ignored (and replaced on save). A damaged line: -1 with
+ * "PATH:LINE: problem" in err. */
+int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t err_len);
+const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t a, uint64_t b);
+/* 0, or -1 when out of memory. */
+int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t a, uint64_t b, const duel_tally *t);
+/* Writes the file (temporary, then rename) when something was added. 0 or
+ * -1 (errno set). */
+int duel_cmp_cache_save(duel_cmp_cache *c);
+void duel_cmp_cache_free(duel_cmp_cache *c);
+
+#endif /* DUEL_CMP_CACHE_H */
