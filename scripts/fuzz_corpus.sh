@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # fuzz_corpus.sh [BUILD_DIR] [FUZZ_BUILD_DIR] - (re)makes the fuzzers' seed corpora in tests/fuzz/corpus/NAME with the
 # project's own tools: blobs and population checkpoints (make_corpus), a small coevolution's checkpoint, config and
-# CSVs (duel_evolve run), INI files (configs/, bench/), LCM logs cut short and crafted ones, LCM messages.
+# CSVs (duel_evolve run, compare), INI files (configs/, bench/), LCM logs cut short and crafted ones, LCM messages.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$(realpath "${1:-$root/build}")
@@ -39,5 +39,7 @@ done
 
 cp "$work/r3/dominance.csv" "$c/rundir/dominance.csv"
 cp "$work/r3/generations.csv" "$c/rundir/generations.csv"
+"$duel" compare "$work/r3" --against "$work/r1" > /dev/null
+cp "$work/r3/compare-cache.csv" "$c/rundir/compare-cache.csv"
 printf 'generation,population\n0,A\n1,B\n2,A' > "$c/rundir/torn.csv"
 du -sh "$c"/* | sed "s|$c/||"

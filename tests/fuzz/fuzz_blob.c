@@ -1,8 +1,9 @@
-/* fuzz_blob.c - libFuzzer harness: any bytes through nrt_inspect, nrt_load, nrt_step and nrt_settle must never crash. */
+/* fuzz_blob.c - libFuzzer harness: any bytes through nrt_inspect, nrt_load, nrt_step and nrt_settle, and neat_genome_from_blob, must never crash; a blob's genome writes back the same blob. */
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
+#include "neat.h"
 #include "nrt.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -22,6 +23,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (err == NRT_OK && need > sizeof fuzz_mem - 1)
         __builtin_trap(); /* nrt_inspect promised more memory than any blob can need */
     err = nrt_load(&net, data, size, fuzz_mem + off, sizeof fuzz_mem - off);
+    {
+        /* a start topology from a blob: refused whenever the runtime refuses it (and when a
+         * genome cannot hold the network: a connection given twice) */
+        neat_genome g;
+        int ge = neat_genome_from_blob(&g, data, size, NULL);
+        if ((ge == NEAT_OK && err != NRT_OK) || (ge != NEAT_OK && ge != NEAT_E_FORMAT))
+            __builtin_trap();
+        if (ge == NEAT_OK) {
+            static uint8_t back[300000];
+            size_t blen = 0;
+            /* the same network written again is the same blob, when the genome has the duel-like layout */
+            if (neat_blob_write(&g, (uint32_t)net.n_inputs - 1u, net.n_outputs, back, sizeof back, &blen) == NEAT_OK &&
+                (blen != size || memcmp(back, data, size) != 0))
+                __builtin_trap();
+            neat_genome_free(&g, NULL);
+        }
+    }
     if (err != NRT_OK) {
         if (err < NRT_E_WEIGHT || err > NRT_E_ARG || nrt_strerror(err)[0] == '\0')
             __builtin_trap();

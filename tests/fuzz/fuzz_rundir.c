@@ -1,4 +1,4 @@
-/* fuzz_rundir.c - libFuzzer harness: any bytes as a run directory's dominance.csv (the ladder and compare read it) and as a generations.csv cut back on resume, which must stay a prefix that ends at a row. */
+/* fuzz_rundir.c - libFuzzer harness: any bytes as a run directory's dominance.csv (the ladder and compare read it), as its compare-cache.csv, and as a generations.csv cut back on resume, which must stay a prefix that ends at a row. */
 #define _POSIX_C_SOURCE 200809L
 #include <stddef.h>
 #include <stdint.h>
@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "duel_cmp_cache.h"
 #include "duel_dominance.h"
 #include "duel_files.h"
 
@@ -38,6 +39,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         free(rows);
     } else if (strncmp(err, "d.csv", 5) != 0 || rows != NULL || n != 0) {
         __builtin_trap();
+    }
+    {
+        duel_cmp_cache c;
+        if (duel_cmp_cache_parse(&c, "c.csv", (const char *)data, size, err, sizeof err) == 0) {
+            size_t i;
+            for (i = 0; i < c.n; i++)
+                if (c.e[i].tally.wins_a + c.e[i].tally.wins_b + c.e[i].tally.draws + c.e[i].tally.timeouts != 288u ||
+                    (i > 0 && !(c.e[i - 1].a < c.e[i].a || (c.e[i - 1].a == c.e[i].a && c.e[i - 1].b < c.e[i].b))) ||
+                    duel_cmp_cache_find(&c, c.e[i].a, c.e[i].b) != &c.e[i].tally)
+                    __builtin_trap();
+            duel_cmp_cache_free(&c);
+        } else if (strncmp(err, "c.csv", 5) != 0) {
+            __builtin_trap();
+        }
     }
     f = fopen(fr_path, "wb");
     if (f == NULL || fwrite(data, 1, size, f) != size || fclose(f) != 0)

@@ -105,24 +105,33 @@ static int duel_cmp_u32(const char **s, char end, uint32_t *v)
 
 int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t err_len)
 {
-    char header[200];
     uint8_t *text;
-    size_t len, at, line = 1;
-    int r;
-
+    size_t len;
+    int r = duel_file_read(path, DUEL_CMP_MAX_FILE, &text, &len);
     memset(c, 0, sizeof *c);
-    snprintf(c->path, sizeof c->path, "%s", path);
-    r = duel_file_read(path, DUEL_CMP_MAX_FILE, &text, &len);
     if (r != 0) {
+        snprintf(c->path, sizeof c->path, "%s", path);
         if (r == -1 && errno == ENOENT)
             return 0;
         snprintf(err, err_len, "%s: cannot read: %s", path, errno == EFBIG ? "larger than 1 GB" : strerror(errno));
         return -1;
     }
+    r = duel_cmp_cache_parse(c, path, (const char *)text, len, err, err_len);
+    free(text);
+    return r;
+}
+
+int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, size_t len, char *err,
+                         size_t err_len)
+{
+    char header[200];
+    size_t at, line = 1;
+
+    memset(c, 0, sizeof *c);
+    snprintf(c->path, sizeof c->path, "%s", path);
     snprintf(header, sizeof header, DUEL_CMP_HEADER, DUEL_SPEC_VERSION);
     if (len < strlen(header) || memcmp(text, header, strlen(header)) != 0) {
         /* another version of the world or of this file: its results do not hold; start afresh */
-        free(text);
         c->dirty = 1;
         return 0;
     }
@@ -140,7 +149,8 @@ int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t e
             goto bad;
         memcpy(row, text + at, end - at);
         row[end - at] = '\0';
-        if (duel_cmp_hex(p, &a) || p[16] != ',' || duel_cmp_hex(p + 17, &b) || p[33] != ',')
+        if (strlen(row) != end - at || duel_cmp_hex(p, &a) || p[16] != ',' || duel_cmp_hex(p + 17, &b) ||
+            p[33] != ',')
             goto bad;
         p += 34;
         if (duel_cmp_u32(&p, ',', &t.wins_a) || duel_cmp_u32(&p, ',', &t.wins_b) || duel_cmp_u32(&p, ',', &t.draws) ||
@@ -149,19 +159,16 @@ int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t e
             goto bad;
         if (duel_cmp_cache_add(c, a, b, &t) != 0) {
             snprintf(err, err_len, "%s: out of memory", path);
-            free(text);
             duel_cmp_cache_free(c);
             return -1;
         }
         at = end + 1;
     }
-    free(text);
     c->dirty = 0;
     return 0;
 bad:
     snprintf(err, err_len, "%s:%zu: not a cache entry (a_hash,b_hash,wins_a,wins_b,draws,timeouts summing to %d): "
                            "delete the file to rebuild it", path, line + 1, 2 * DUEL_CONFIGS);
-    free(text);
     duel_cmp_cache_free(c);
     return -1;
 }

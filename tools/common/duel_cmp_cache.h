@@ -26,6 +26,9 @@ uint64_t duel_blob_hash(const uint8_t *blob, size_t len);
  * version is ignored (and replaced on save). A damaged line: -1 with
  * "PATH:LINE: problem" in err. */
 int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t err_len);
+/* The same from len bytes of text (path names it and is where it saves). */
+int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, size_t len, char *err,
+                         size_t err_len);
 const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t a, uint64_t b);
 /* 0, or -1 when out of memory. */
 int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t a, uint64_t b, const duel_tally *t);
