@@ -45,7 +45,7 @@ typedef struct duel_cmp_stats {
 
 /* DIR is a run that has played every generation of its config.ini, and its
  * dominance.csv holds the levels its checkpoint does. */
-static int duel_cmp_open(duel_cmp_run *r, const char *dir)
+static int duel_cmp_open_in(duel_cmp_run *r, const char *dir)
 {
     char path[4200], err[4400];
     duel_config cfg;
@@ -118,6 +118,15 @@ static void duel_cmp_close(duel_cmp_run *r)
     duel_levels_free(r->levels, r->n_levels);
     free(r->hash);
     memset(r, 0, sizeof *r);
+}
+
+/* duel_cmp_open_in, leaving nothing allocated when it fails */
+static int duel_cmp_open(duel_cmp_run *r, const char *dir)
+{
+    if (duel_cmp_open_in(r, dir) == 0)
+        return 0;
+    duel_cmp_close(r);
+    return -1;
 }
 
 /* Both readings: the highest level defeated, and the highest L such that
