@@ -11,6 +11,7 @@
 #include "duel_cli.h"
 #include "duel_cmp_cache.h"
 #include "duel_config.h"
+#include "duel_ctrl.h"
 #include "duel_files.h"
 #include "duel_levels.h"
 #include "duel_pairs.h"
@@ -82,9 +83,10 @@ static int duel_cmp_open_in(duel_cmp_run *r, const char *dir)
         return -1;
     }
     e = neat_coev_load(&c, buf, len, NULL, &off);
+    if (e)
+        duel_ckpt_error("compare: ", path, buf, len, e, off);
     free(buf);
     if (e) {
-        fprintf(stderr, "duel_evolve: compare: %s: offset %zu: %s\n", path, off, neat_strerror(e));
         return -1;
     }
     gen = neat_coev_generation(c);

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_files.h"
 #include "neat_coev.h"
 
@@ -49,9 +50,10 @@ int duel_inspect_run(const char *arg)
         return 2;
     }
     e = neat_coev_load(&c, buf, len, NULL, &off);
+    if (e)
+        duel_ckpt_error("", path, buf, len, e, off);
     free(buf);
     if (e) {
-        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(e));
         return 2;
     }
     s = neat_coev_start(c);

@@ -14,6 +14,7 @@
 #include "duel.h"
 #include "duel_cli.h"
 #include "duel_config.h"
+#include "duel_ctrl.h"
 #include "duel_dominance.h"
 #include "duel_files.h"
 #include "duel_games.h"
@@ -712,9 +713,10 @@ int duel_cmd_resume(int argc, char **argv)
             return e;
     } else {
         e = neat_coev_load(&R.coev, buf, len, NULL, &off);
+        if (e)
+            duel_ckpt_error("", path, buf, len, e, off);
         free(buf);
         if (e) {
-            fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(e));
             return 2;
         }
         if (neat_coev_seed(R.coev) != R.cfg.seed) {

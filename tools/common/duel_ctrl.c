@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "duel_ctrl.h"
+#include "neat_coev.h"
 #include "duel_files.h"
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
@@ -71,4 +72,16 @@ void duel_cli_ctrl_close(duel_cli_ctrl *c)
     c->blob = NULL;
     c->mem = NULL;
     c->ctrl.net = NULL;
+}
+
+void duel_ckpt_error(const char *prefix, const char *path, const uint8_t *buf, size_t len, int err, size_t off)
+{
+    uint32_t v;
+    if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && memcmp(buf, "NEATCOEV", 8) == 0) {
+        v = (uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24;
+        fprintf(stderr, "duel_evolve: %s%s: offset 8: checkpoint format %lu, but this duel_evolve reads format %d "
+                        "(docs/formats.md)\n", prefix, path, (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
+        return;
+    }
+    fprintf(stderr, "duel_evolve: %s%s: offset %zu: %s\n", prefix, path, off, neat_strerror(err));
 }

@@ -25,6 +25,11 @@ int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len);
 /* Loads spec into c; on error prints one line naming the problem to stderr
  * and returns -1. */
 int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec);
+
+/* One line on stderr for a coevolution checkpoint neat_coev_load refused
+ * with err at offset off: "PREFIXPATH: offset N: why", naming the format
+ * versions when it is one this build does not read. */
+void duel_ckpt_error(const char *prefix, const char *path, const uint8_t *buf, size_t len, int err, size_t off);
 void duel_cli_ctrl_close(duel_cli_ctrl *c);
 
 #endif /* DUEL_CTRL_H */
