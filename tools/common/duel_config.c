@@ -37,6 +37,9 @@ void duel_config_default(duel_config *cfg)
     cfg->neat.n_outputs = DUEL_N_OUTPUTS;
     /* coevolution cannot use the whole-population stagnation rule (neat_coev.h) */
     cfg->neat.pop_stagnation = 0;
+    /* the duel's weight mutation: docs/parameters.md, "Weight perturbation" (the library keeps the C++ 2.5) */
+    cfg->neat.weight_perturb_power = 1.0;
+    cfg->neat.weight_replace_range = 1.0;
     cfg->start.kind = DUEL_START_MINIMAL;
 }
 
