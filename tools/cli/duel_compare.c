@@ -17,8 +17,6 @@
 #include "duel_pairs.h"
 #include "neat_coev.h"
 
-/* checkpoints of paper-scale runs are a few MB; this bounds a bad file */
-#define DUEL_CMP_CKPT_MAX ((size_t)1 << 30)
 #define DUEL_CMP_MAX_RUNS 4096
 
 /* A finished run: its dominance ranking with every dominant's blob. */
@@ -51,8 +49,6 @@ static int duel_cmp_open_in(duel_cmp_run *r, const char *dir)
     char path[4200], err[4400];
     duel_config cfg;
     struct stat st;
-    uint8_t *buf;
-    size_t len, off = 0;
     neat_coev *c;
     uint32_t gen, doms, k;
     int e;
@@ -75,20 +71,12 @@ static int duel_cmp_open_in(duel_cmp_run *r, const char *dir)
         return -1;
     }
     snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
-    e = duel_file_read(path, DUEL_CMP_CKPT_MAX, &buf, &len);
-    if (e != 0) {
-        fprintf(stderr, "duel_evolve: compare: %s: %s\n", path,
-                errno == ENOENT ? "missing: not a run directory, or one that never finished a generation"
-                                : strerror(errno));
+    e = duel_ckpt_load("compare: ", path, &c);
+    if (e > 0)
+        fprintf(stderr, "duel_evolve: compare: %s: missing: not a run directory, or one that never finished a "
+                        "generation\n", path);
+    if (e != 0)
         return -1;
-    }
-    e = neat_coev_load(&c, buf, len, NULL, &off);
-    if (e)
-        duel_ckpt_error("compare: ", path, buf, len, e, off);
-    free(buf);
-    if (e) {
-        return -1;
-    }
     gen = neat_coev_generation(c);
     doms = neat_coev_dominant_count(c);
     neat_coev_free(c);

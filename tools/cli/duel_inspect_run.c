@@ -6,11 +6,8 @@
 
 #include "duel_cli.h"
 #include "duel_ctrl.h"
-#include "duel_files.h"
 #include "neat_coev.h"
 
-/* checkpoints of paper-scale runs are a few MB; this bounds a bad file */
-#define DUEL_CKPT_MAX ((size_t)1 << 30)
 
 static const char *duel_mode_name(int mode)
 {
@@ -33,8 +30,6 @@ int duel_inspect_run(const char *arg)
 {
     char path[4200];
     struct stat st;
-    uint8_t *buf;
-    size_t len, off = 0;
     neat_coev *c;
     const neat_genome *s;
     uint32_t p, i, lo = UINT32_MAX, hi = 0;
@@ -44,18 +39,11 @@ int duel_inspect_run(const char *arg)
         snprintf(path, sizeof path, "%s/checkpoint.bin", arg);
     else
         snprintf(path, sizeof path, "%s", arg);
-    e = duel_file_read(path, DUEL_CKPT_MAX, &buf, &len);
-    if (e != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, errno == EFBIG ? "larger than 1 GB" : strerror(errno));
+    e = duel_ckpt_load("", path, &c);
+    if (e > 0)
+        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(ENOENT));
+    if (e != 0)
         return 2;
-    }
-    e = neat_coev_load(&c, buf, len, NULL, &off);
-    if (e)
-        duel_ckpt_error("", path, buf, len, e, off);
-    free(buf);
-    if (e) {
-        return 2;
-    }
     s = neat_coev_start(c);
     duel_innov_range(s, &lo, &hi);
     printf("file: %s\n", path);

@@ -498,14 +498,54 @@ static void duel_start_words(const duel_run *R, char *buf, size_t cap)
              neat_genome_enabled_count(g), R->cfg.coev.random_fitness ? ", random fitness" : "");
 }
 
+/* A new run's directory: created and locked, refused when it holds a run
+ * or the records of one, cleared of a run that died before its first
+ * checkpoint, with config.ini written. 0, or the exit status after one line. */
+static int duel_prepare_dir(duel_run *R)
+{
+    static const char *const files[] = {"generations.csv", "dominance.csv"};
+    char err[600], path[4200];
+    struct stat st;
+    int i;
+    duel_path(path, sizeof path, R->dir, "champions");
+    if (duel_mkdir(R->dir) != 0 || duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R->dir, strerror(errno));
+        return 2;
+    }
+    if (duel_lock(R->dir) != 0)
+        return 2;
+    duel_path(path, sizeof path, R->dir, "checkpoint.bin");
+    if (stat(path, &st) == 0) { /* checked under the lock: two runs cannot both pass */
+        fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
+                        "another --out\n", R->dir, R->dir);
+        return 2;
+    }
+    duel_path(path, sizeof path, R->dir, "games");
+    if (R->record_games && duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
+        return 2;
+    }
+    /* a directory left by a run that died before its first checkpoint starts over; one whose checkpoint
+     * is gone but whose generations are recorded is not overwritten */
+    if (duel_has_history(R->dir, err, sizeof err)) {
+        fprintf(stderr, "duel_evolve: %s has no checkpoint.bin but holds %s: refusing to overwrite them (restore "
+                        "the checkpoint and resume, or choose another --out)\n", R->dir, err);
+        return 2;
+    }
+    for (i = 0; i < 2; i++) {
+        duel_path(path, sizeof path, R->dir, files[i]);
+        unlink(path);
+    }
+    return duel_write_config(R) != 0 ? 1 : 0;
+}
+
 int duel_cmd_run(int argc, char **argv)
 {
     duel_run R;
     const char *config = NULL;
-    char err[600], path[4200], words[DUEL_START_MAX_PATH + 100], *sets[64];
+    char err[600], words[DUEL_START_MAX_PATH + 100], *sets[64];
     uint32_t seed = 0, gens = 0, n_sets = 0, k;
     int i, c, have_seed = 0, have_gens = 0, e;
-    struct stat st;
 
     memset(&R, 0, sizeof R);
     duel_config_default(&R.cfg);
@@ -556,47 +596,13 @@ int duel_cmd_run(int argc, char **argv)
                 err);
         return 2;
     }
-    /* a bad start topology (an unreadable blob) is refused before anything is made */
+    /* the populations first: a bad start topology (an unreadable blob) is refused before anything is made */
     if ((e = duel_create(&R)) != 0)
         return e;
-    neat_coev_free(R.coev);
-    R.coev = NULL;
-    duel_path(path, sizeof path, R.dir, "champions");
-    if (duel_mkdir(R.dir) != 0 || duel_mkdir(path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R.dir, strerror(errno));
-        return 2;
-    }
-    if (duel_lock(R.dir) != 0)
-        return 2;
-    duel_path(path, sizeof path, R.dir, "checkpoint.bin");
-    if (stat(path, &st) == 0) { /* checked under the lock: two runs cannot both pass */
-        fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
-                        "another --out\n", R.dir, R.dir);
-        return 2;
-    }
-    duel_path(path, sizeof path, R.dir, "games");
-    if (R.record_games && duel_mkdir(path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
-        return 2;
-    }
-    /* a directory left by a run that died before its first checkpoint starts over; one whose checkpoint
-     * is gone but whose generations are recorded is not overwritten */
-    if (duel_has_history(R.dir, err, sizeof err)) {
-        fprintf(stderr, "duel_evolve: %s has no checkpoint.bin but holds %s: refusing to overwrite them (restore "
-                        "the checkpoint and resume, or choose another --out)\n", R.dir, err);
-        return 2;
-    }
-    {
-        static const char *const files[] = {"generations.csv", "dominance.csv"};
-        for (i = 0; i < 2; i++) {
-            duel_path(path, sizeof path, R.dir, files[i]);
-            unlink(path);
-        }
-    }
-    if (duel_write_config(&R) != 0)
-        return 1;
-    if ((e = duel_create(&R)) != 0)
+    if ((e = duel_prepare_dir(&R)) != 0) {
+        neat_coev_free(R.coev);
         return e;
+    }
     duel_log(&R, "run: config %s, seed %u, %u generations, %u threads", config, R.cfg.seed, R.cfg.generations,
              R.threads);
     for (k = 0; k < n_sets; k++)
@@ -637,8 +643,6 @@ int duel_cmd_resume(int argc, char **argv)
     char err[600], path[4200], *sets[64];
     uint32_t gens = 0, n_sets = 0, k, g;
     int i, c, have_gens = 0, e;
-    uint8_t *buf;
-    size_t len, off = 0;
     duel_config before;
 
     memset(&R, 0, sizeof R);
@@ -697,11 +701,10 @@ int duel_cmd_resume(int argc, char **argv)
     }
 
     duel_path(path, sizeof path, R.dir, "checkpoint.bin");
-    if (duel_file_read(path, SIZE_MAX, &buf, &len) != 0) {
-        if (errno != ENOENT) {
-            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(errno));
-            return 2;
-        }
+    c = duel_ckpt_load("", path, &R.coev);
+    if (c < 0)
+        return 2;
+    if (c > 0) {
         /* died before its first checkpoint: start from generation 0; but a run that recorded
          * generations and lost its checkpoint cannot go on */
         if (duel_has_history(R.dir, err, sizeof err)) {
@@ -712,13 +715,6 @@ int duel_cmd_resume(int argc, char **argv)
         if ((e = duel_create(&R)) != 0)
             return e;
     } else {
-        e = neat_coev_load(&R.coev, buf, len, NULL, &off);
-        if (e)
-            duel_ckpt_error("", path, buf, len, e, off);
-        free(buf);
-        if (e) {
-            return 2;
-        }
         if (neat_coev_seed(R.coev) != R.cfg.seed) {
             fprintf(stderr, "duel_evolve: %s: seed %llu, but config.ini says %u\n", path,
                     (unsigned long long)neat_coev_seed(R.coev), R.cfg.seed);

@@ -74,14 +74,28 @@ void duel_cli_ctrl_close(duel_cli_ctrl *c)
     c->ctrl.net = NULL;
 }
 
-void duel_ckpt_error(const char *prefix, const char *path, const uint8_t *buf, size_t len, int err, size_t off)
+int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
 {
+    uint8_t *buf;
+    size_t len, off = 0;
     uint32_t v;
+    int err;
+    *out = NULL;
+    if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
+        if (errno == ENOENT)
+            return 1;
+        fprintf(stderr, "duel_evolve: %s%s: cannot read: %s\n", prefix, path,
+                errno == EFBIG ? "larger than 1 GB" : strerror(errno));
+        return -1;
+    }
+    err = neat_coev_load(out, buf, len, NULL, &off);
     if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && memcmp(buf, "NEATCOEV", 8) == 0) {
         v = (uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24;
         fprintf(stderr, "duel_evolve: %s%s: offset 8: checkpoint format %lu, but this duel_evolve reads format %d "
                         "(docs/formats.md)\n", prefix, path, (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
-        return;
+    } else if (err) {
+        fprintf(stderr, "duel_evolve: %s%s: offset %zu: %s\n", prefix, path, off, neat_strerror(err));
     }
-    fprintf(stderr, "duel_evolve: %s%s: offset %zu: %s\n", prefix, path, off, neat_strerror(err));
+    free(buf);
+    return err ? -1 : 0;
 }

@@ -26,10 +26,16 @@ int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len);
  * and returns -1. */
 int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec);
 
-/* One line on stderr for a coevolution checkpoint neat_coev_load refused
- * with err at offset off: "PREFIXPATH: offset N: why", naming the format
- * versions when it is one this build does not read. */
-void duel_ckpt_error(const char *prefix, const char *path, const uint8_t *buf, size_t len, int err, size_t off);
+/* Coevolution checkpoints are a few MB at the paper's scale; a larger file than this is refused. */
+#define DUEL_CKPT_MAX ((size_t)1 << 30)
+
+struct neat_coev;
+/* The coevolution checkpoint at path, read and loaded into *out. 0; 1 when
+ * the file does not exist (nothing printed); -1 after one line on stderr,
+ * "duel_evolve: PREFIXPATH: ...": unreadable, larger than DUEL_CKPT_MAX, or
+ * refused at an offset (naming both format versions when it is a format
+ * this build does not read). */
+int duel_ckpt_load(const char *prefix, const char *path, struct neat_coev **out);
 void duel_cli_ctrl_close(duel_cli_ctrl *c);
 
 #endif /* DUEL_CTRL_H */
