@@ -179,8 +179,7 @@ int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_inputs, uint32_t n_o
 /* The network of a champion blob (validated as nrt_load does) as a genome:
  * nodes and connections kept, node ids as the blob's node indices (bias 0,
  * inputs, outputs, hidden), innovations 0, 1, ... in the blob's connection
- * order, weights the blob's. NEAT_E_FORMAT if the blob is not valid, or
- * holds a connection twice (which a genome cannot). */
+ * order, weights the blob's. NEAT_E_FORMAT if the blob is not valid. */
 int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a);
 uint32_t neat_genome_hidden_count(const neat_genome *g);
 uint32_t neat_genome_enabled_count(const neat_genome *g);

@@ -24,11 +24,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         __builtin_trap(); /* nrt_inspect promised more memory than any blob can need */
     err = nrt_load(&net, data, size, fuzz_mem + off, sizeof fuzz_mem - off);
     {
-        /* a start topology from a blob: refused whenever the runtime refuses it (and when a
-         * genome cannot hold the network: a connection given twice) */
+        /* a start topology from a blob: refused exactly when the runtime refuses it */
         neat_genome g;
         int ge = neat_genome_from_blob(&g, data, size, NULL);
-        if ((ge == NEAT_OK && err != NRT_OK) || (ge != NEAT_OK && ge != NEAT_E_FORMAT))
+        if ((ge == NEAT_OK) != (err == NRT_OK) || (ge != NEAT_OK && ge != NEAT_E_FORMAT))
             __builtin_trap();
         if (ge == NEAT_OK) {
             static uint8_t back[300000];
