@@ -27,17 +27,28 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     duel_dominance_row *rows;
+    duel_dominance_score *scores;
     uint32_t n, k;
     char err[400];
     uint8_t *back;
     size_t len;
     FILE *f;
-    if (duel_dominance_parse("d.csv", (const char *)data, size, &rows, &n, err, sizeof err) == 0) {
-        for (k = 0; k < n; k++)
-            if (rows[k].level != k + 1 || (rows[k].pop[0] != 'A' && rows[k].pop[0] != 'B'))
+    if (duel_dominance_parse_scores("d.csv", (const char *)data, size, &rows, &n, &scores, err, sizeof err) == 0) {
+        uint32_t at = 0;
+        for (k = 0; k < n; k++) {
+            if (rows[k].level != k + 1 || (rows[k].pop[0] != 'A' && rows[k].pop[0] != 'B') || rows[k].scores != at)
                 __builtin_trap();
+            at += k; /* level k + 1 has k scores */
+        }
+        if (at > 0 && scores == NULL)
+            __builtin_trap();
+        if (at > 0) { /* the last score is there (ASan checks the read) */
+            volatile uint32_t last = scores[at - 1].wins + scores[at - 1].losses;
+            (void)last;
+        }
         free(rows);
-    } else if (strncmp(err, "d.csv", 5) != 0 || rows != NULL || n != 0) {
+        free(scores);
+    } else if (strncmp(err, "d.csv", 5) != 0 || rows != NULL || n != 0 || scores != NULL) {
         __builtin_trap();
     }
     {

@@ -19,6 +19,7 @@ int duel_cmd_resume(int argc, char **argv);
 int duel_cmd_config(int argc, char **argv);
 int duel_cmd_ladder(int argc, char **argv);
 int duel_cmd_compare(int argc, char **argv);
+int duel_cmd_experiment(int argc, char **argv);
 int duel_cmd_inspect(int argc, char **argv);
 int duel_cmd_dot(int argc, char **argv);
 int duel_cmd_node(int argc, char **argv);

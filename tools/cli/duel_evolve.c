@@ -16,6 +16,9 @@ static void duel_usage(FILE *f)
                "       duel_evolve ladder DIR\n"
                "       duel_evolve compare RUN... --against RUN... [--threads T] [--json FILE] [--csv FILE] "
                "[--cache FILE]\n"
+               "       duel_evolve experiment PLAN --out DIR [--set key=value ...] [--jobs J] [--threads T] [--quiet]\n"
+               "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"
+               "       duel_evolve experiment report DIR\n"
                "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
                "[--lcm-log FILE.lcm]\n"
                "       duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
@@ -40,7 +43,7 @@ typedef struct duel_command {
 static const duel_command duel_commands[] = {
     {"run", duel_cmd_run},         {"resume", duel_cmd_resume},   {"config", duel_cmd_config},
     {"ladder", duel_cmd_ladder},   {"play", duel_cmd_play},       {"inspect", duel_cmd_inspect},
-    {"compare", duel_cmd_compare},
+    {"compare", duel_cmd_compare}, {"experiment", duel_cmd_experiment},
     {"dot", duel_cmd_dot},         {"node", duel_cmd_node},       {"log", duel_cmd_log},
     {"render", duel_cmd_render},   {"render-net", duel_cmd_render_net}, {"export", duel_cmd_export},
 };

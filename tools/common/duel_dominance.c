@@ -37,12 +37,40 @@ static int duel_dom_char(const char **p, const char *end, char c)
 int duel_dominance_parse(const char *name, const char *text, size_t len, duel_dominance_row **rows, uint32_t *n,
                          char *err, size_t err_len)
 {
+    return duel_dominance_parse_scores(name, text, len, rows, n, NULL, err, err_len);
+}
+
+/* s[*n] = (w, l), growing s. 0 or -1 (out of memory). */
+static int duel_dom_push(duel_dominance_score **s, uint32_t *n, uint32_t *cap, uint32_t w, uint32_t l)
+{
+    if (*n == *cap) {
+        duel_dominance_score *ns;
+        uint32_t nc = *cap ? 2 * *cap : 256;
+        if (nc < *cap)
+            return -1;
+        ns = (duel_dominance_score *)realloc(*s, (size_t)nc * sizeof *ns);
+        if (ns == NULL)
+            return -1;
+        *s = ns;
+        *cap = nc;
+    }
+    (*s)[*n].wins = w;
+    (*s)[(*n)++].losses = l;
+    return 0;
+}
+
+int duel_dominance_parse_scores(const char *name, const char *text, size_t len, duel_dominance_row **rows,
+                                uint32_t *n, duel_dominance_score **scores, char *err, size_t err_len)
+{
     const char *p = text, *end = text + len;
     duel_dominance_row *out = NULL;
-    uint32_t count = 0, cap = 0, line = 1;
+    duel_dominance_score *sc = NULL;
+    uint32_t count = 0, cap = 0, line = 1, n_sc = 0, sc_cap = 0;
     const char *nl = (const char *)memchr(p, '\n', len);
     *rows = NULL;
     *n = 0;
+    if (scores != NULL)
+        *scores = NULL;
     if (nl == NULL || (size_t)(nl - p) + 1 != strlen(DUEL_DOMINANCE_HEADER) ||
         memcmp(p, DUEL_DOMINANCE_HEADER, (size_t)(nl - p)) != 0) {
         snprintf(err, err_len, "%s:1: not a dominance.csv (expected the header %.*s)", name,
@@ -72,10 +100,16 @@ int duel_dominance_parse(const char *name, const char *text, size_t len, duel_do
             goto bad;
         }
         /* the wins against each level below, latest first */
-        for (k = 0; k + 1 < r.level; k++)
+        r.scores = n_sc;
+        for (k = 0; k + 1 < r.level; k++) {
             if ((k && duel_dom_char(&p, e, ' ')) || duel_dom_u32(&p, e, &w) || duel_dom_char(&p, e, ':') ||
                 duel_dom_u32(&p, e, &l))
                 break;
+            if (scores != NULL && duel_dom_push(&sc, &n_sc, &sc_cap, w, l) != 0) {
+                snprintf(err, err_len, "%s: out of memory", name);
+                goto bad;
+            }
+        }
         if (k + 1 < r.level || p != e) {
             snprintf(err, err_len, "%s:%u: level %u needs %u w:l scores, one per level below", name, line, r.level,
                      r.level ? r.level - 1 : 0);
@@ -101,9 +135,12 @@ int duel_dominance_parse(const char *name, const char *text, size_t len, duel_do
     }
     *rows = out;
     *n = count;
+    if (scores != NULL)
+        *scores = sc;
     return 0;
 bad:
     free(out);
+    free(sc);
     return -1;
 }
 
@@ -125,11 +162,19 @@ char *duel_dominance_row_text(uint32_t level, uint32_t generation, char pop, uin
 
 int duel_dominance_read(const char *dir, duel_dominance_row **rows, uint32_t *n, char *err, size_t err_len)
 {
+    return duel_dominance_read_scores(dir, rows, n, NULL, err, err_len);
+}
+
+int duel_dominance_read_scores(const char *dir, duel_dominance_row **rows, uint32_t *n, duel_dominance_score **scores,
+                               char *err, size_t err_len)
+{
     char path[4200];
     uint8_t *data;
     size_t len;
     int r;
     *rows = NULL;
+    if (scores != NULL)
+        *scores = NULL;
     *n = 0;
     if (snprintf(path, sizeof path, "%s/dominance.csv", dir) >= (int)sizeof path) {
         snprintf(err, err_len, "%.100s...: path too long", dir);
@@ -140,7 +185,7 @@ int duel_dominance_read(const char *dir, duel_dominance_row **rows, uint32_t *n,
         snprintf(err, err_len, "%s: %s: %s", path, r == -1 ? "cannot open" : "cannot read", strerror(errno));
         return -1;
     }
-    r = duel_dominance_parse(path, (const char *)data, len, rows, n, err, err_len);
+    r = duel_dominance_parse_scores(path, (const char *)data, len, rows, n, scores, err, err_len);
     free(data);
     return r;
 }

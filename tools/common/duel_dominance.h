@@ -10,7 +10,13 @@ typedef struct duel_dominance_row {
     uint32_t generation; /* whose champion (champions/gen-NNNNN.blob) it is */
     char pop[2];         /* "A" or "B" */
     uint32_t hidden, conns;
+    uint32_t scores;     /* duel_dominance_parse_scores: where this row's scores start */
 } duel_dominance_row;
+
+/* A row's result against one level below it: wins and losses of its 288 games. */
+typedef struct duel_dominance_score {
+    uint32_t wins, losses;
+} duel_dominance_score;
 
 #define DUEL_DOMINANCE_HEADER "level,generation,population,hidden,connections,wins\n"
 #define DUEL_DOMINANCE_MAX_FILE (256u << 20) /* a 500-generation run writes about 30 KB */
@@ -25,6 +31,12 @@ typedef struct duel_dominance_row {
 int duel_dominance_parse(const char *name, const char *text, size_t len, duel_dominance_row **rows, uint32_t *n,
                          char *err, size_t err_len);
 
+/* The same, and the scores: *scores (malloc'd, the caller frees it; NULL
+ * when there is none) holds, for each row, level - 1 scores from
+ * (*scores)[row.scores] on: against level - 1 first, level 1 last. */
+int duel_dominance_parse_scores(const char *name, const char *text, size_t len, duel_dominance_row **rows,
+                                uint32_t *n, duel_dominance_score **scores, char *err, size_t err_len);
+
 /* One row of dominance.csv, newline included, in a malloc'd string (NULL when
  * out of memory): the wins field lists "w:l" for each of the n_beaten levels
  * below, latest first, however many there are. */
@@ -33,5 +45,8 @@ char *duel_dominance_row_text(uint32_t level, uint32_t generation, char pop, uin
 
 /* DIR/dominance.csv read and parsed; err names the file. 0 or -1. */
 int duel_dominance_read(const char *dir, duel_dominance_row **rows, uint32_t *n, char *err, size_t err_len);
+/* The same with the scores (duel_dominance_parse_scores). */
+int duel_dominance_read_scores(const char *dir, duel_dominance_row **rows, uint32_t *n, duel_dominance_score **scores,
+                               char *err, size_t err_len);
 
 #endif /* DUEL_DOMINANCE_H */

@@ -1,0 +1,104 @@
+/* duel_experiment.c - `duel_evolve experiment PLAN --out DIR`, `experiment resume DIR` and `experiment report DIR`: the paper's section 6 from one plan. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "duel_cli.h"
+#include "duel_exp.h"
+#include "duel_plan.h"
+
+#define DUEL_EXP_USAGE                                                                                                \
+    "usage: duel_evolve experiment PLAN --out DIR [--set key=value ...] [--jobs J] [--threads T] [--quiet]\n"        \
+    "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"                                   \
+    "       duel_evolve experiment report DIR"
+
+static int duel_exp_u32(const char *opt, const char *v, uint32_t hi, uint32_t *out)
+{
+    char *end;
+    unsigned long x;
+    errno = 0;
+    x = strtoul(v, &end, 10);
+    if (*v < '0' || *v > '9' || *end != '\0' || errno || x > hi) {
+        fprintf(stderr, "duel_evolve: experiment: %s takes 0 (every core) to %u, not '%s'\n", opt, hi, v);
+        return -1;
+    }
+    *out = (uint32_t)x;
+    return 0;
+}
+
+int duel_cmd_experiment(int argc, char **argv)
+{
+    duel_exp_opts o;
+    duel_plan *plan = NULL;
+    const char *what, *out = NULL, **sets;
+    uint32_t n_sets = 0;
+    char err[9000];
+    int i, mode, rc;
+
+    if (argc < 1 || argv[0][0] == '-') {
+        fprintf(stderr, "%s\n", DUEL_EXP_USAGE);
+        return argc >= 1 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0) ? 0 : 2;
+    }
+    /* mode 0: PLAN --out DIR; 1: resume DIR; 2: report DIR */
+    mode = strcmp(argv[0], "resume") == 0 ? 1 : strcmp(argv[0], "report") == 0 ? 2 : 0;
+    if (mode != 0 && (argc < 2 || argv[1][0] == '-')) {
+        fprintf(stderr, "duel_evolve: experiment %s: which experiment directory?\n%s\n", argv[0], DUEL_EXP_USAGE);
+        return 2;
+    }
+    what = mode == 0 ? argv[0] : argv[1];
+    memset(&o, 0, sizeof o);
+    sets = (const char **)calloc((size_t)argc + 1, sizeof *sets);
+    if (sets == NULL) {
+        fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+        return 1;
+    }
+    for (i = mode == 0 ? 1 : 2; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes = strcmp(a, "--out") == 0 || strcmp(a, "--set") == 0 || strcmp(a, "--jobs") == 0 ||
+                    strcmp(a, "--threads") == 0;
+        if (strcmp(a, "--quiet") == 0 && mode != 2) {
+            o.quiet = 1;
+            continue;
+        }
+        if (!takes || (mode == 2) || (mode == 1 && (strcmp(a, "--out") == 0 || strcmp(a, "--set") == 0))) {
+            fprintf(stderr, "duel_evolve: experiment: unknown option '%s' here\n%s\n", a, DUEL_EXP_USAGE);
+            free(sets);
+            return 2;
+        }
+        if (v == NULL) {
+            fprintf(stderr, "duel_evolve: experiment: %s needs a value\n", a);
+            free(sets);
+            return 2;
+        }
+        i++;
+        if (strcmp(a, "--out") == 0) {
+            out = v;
+        } else if (strcmp(a, "--set") == 0) {
+            sets[n_sets++] = v;
+        } else if (duel_exp_u32(a, v, 256, strcmp(a, "--jobs") == 0 ? &o.jobs : &o.threads) != 0) {
+            free(sets);
+            return 2;
+        }
+    }
+    if (mode == 0 && out == NULL) {
+        fprintf(stderr, "duel_evolve: experiment: where? (--out DIR)\n%s\n", DUEL_EXP_USAGE);
+        free(sets);
+        return 2;
+    }
+    if (mode == 0)
+        rc = duel_plan_load(&plan, what, sets, n_sets, err, sizeof err);
+    else
+        rc = duel_plan_load_dir(&plan, what, err, sizeof err);
+    free(sets);
+    if (rc != 0) {
+        fprintf(stderr, "duel_evolve: experiment: %s\n", err);
+        duel_plan_free(plan);
+        return 2;
+    }
+    if (mode == 2)
+        rc = duel_exp_report(plan, what);
+    else
+        rc = duel_exp_run(plan, mode == 0 ? out : what, &o);
+    duel_plan_free(plan);
+    return rc;
+}

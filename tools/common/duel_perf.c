@@ -1,0 +1,357 @@
+/* duel_perf.c - the paper's performance measure: candidates' highest dominants against other runs' dominance rankings, every comparison cached. */
+#define _XOPEN_SOURCE 700
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "duel_cmp_cache.h"
+#include "duel_config.h"
+#include "duel_ctrl.h"
+#include "duel_pairs.h"
+#include "duel_perf.h"
+#include "neat_coev.h"
+
+/* DIR is a run that has played every generation of its config.ini, and its
+ * dominance.csv holds the levels its checkpoint does. */
+static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre)
+{
+    char path[4200], err[4400];
+    duel_config cfg;
+    struct stat st;
+    neat_coev *c;
+    uint32_t gen, doms, k;
+    int e;
+
+    memset(r, 0, sizeof *r);
+    r->dir = dir;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "duel_evolve: %s%s: not a run directory (%s)\n", pre, dir,
+                stat(dir, &st) != 0 ? strerror(errno) : "not a directory");
+        return -1;
+    }
+    if (realpath(dir, r->real) == NULL) {
+        fprintf(stderr, "duel_evolve: %s%s: %s\n", pre, dir, strerror(errno));
+        return -1;
+    }
+    duel_config_default(&cfg);
+    snprintf(path, sizeof path, "%s/config.ini", dir);
+    if (duel_config_load(&cfg, path, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
+    e = duel_ckpt_load(pre, path, &c);
+    if (e > 0)
+        fprintf(stderr, "duel_evolve: %s%s: missing: not a run directory, or one that never finished a "
+                        "generation\n", pre, path);
+    if (e != 0)
+        return -1;
+    gen = neat_coev_generation(c);
+    doms = neat_coev_dominant_count(c);
+    neat_coev_free(c);
+    if (gen < cfg.generations) {
+        fprintf(stderr, "duel_evolve: %s%s: not a finished run (%u of %u generations): resume it first\n", pre, dir,
+                gen, cfg.generations);
+        return -1;
+    }
+    if (duel_levels_read(dir, &r->levels, &r->n_levels) != 0)
+        return -1;
+    if (r->n_levels != doms) {
+        fprintf(stderr, "duel_evolve: %s%s/dominance.csv: %u levels, but the checkpoint has %u: resume the run "
+                        "to repair it\n", pre, dir, r->n_levels, doms);
+        return -1;
+    }
+    r->hash = (uint64_t *)malloc(r->n_levels * sizeof *r->hash);
+    if (r->hash == NULL) {
+        fprintf(stderr, "duel_evolve: %sout of memory\n", pre);
+        return -1;
+    }
+    for (k = 0; k < r->n_levels; k++)
+        r->hash[k] = duel_blob_hash(r->levels[k].ctrl.blob, r->levels[k].ctrl.blob_len);
+    r->top_hash = r->hash[r->n_levels - 1];
+    return 0;
+}
+
+static void duel_perf_close(duel_perf_run *r)
+{
+    duel_levels_free(r->levels, r->n_levels);
+    free(r->hash);
+    memset(r, 0, sizeof *r);
+}
+
+/* duel_perf_open_in, leaving nothing allocated when it fails */
+static int duel_perf_open(duel_perf_run *r, const char *dir, const char *pre)
+{
+    if (duel_perf_open_in(r, dir, pre) == 0)
+        return 0;
+    duel_perf_close(r);
+    return -1;
+}
+
+/* Both readings: the highest level defeated, and the highest L such that
+ * every level 1..L is defeated ("defeat": more wins of the 288). */
+static void duel_perf_readings(duel_perf_pair *p, uint32_t n)
+{
+    uint32_t k;
+    int gap = 0;
+    p->highest = p->contiguous = 0;
+    for (k = 0; k < n; k++) {
+        int won = p->t[k].wins_a > p->t[k].wins_b;
+        if (won)
+            p->highest = k + 1;
+        if (!won)
+            gap = 1;
+        if (won && !gap)
+            p->contiguous = k + 1;
+    }
+}
+
+double duel_perf_level_share(const duel_perf *m, const duel_perf_pair *p, uint32_t level)
+{
+    return (double)level / (double)m->runs[p->rank].n_levels;
+}
+
+double duel_perf_gen(const duel_perf *m, const duel_perf_pair *p, uint32_t level)
+{
+    return level == 0 ? 0.0 : (double)m->runs[p->rank].levels[level - 1].generation;
+}
+
+static void duel_perf_progress(void *ud, size_t done, size_t n)
+{
+    fprintf(stderr, "\r%s%zu/%zu comparisons played%s", (const char *)ud, done, n, done == n ? "\n" : "");
+}
+
+#define DUEL_PERF_OOM(m_)                                                                                             \
+    do {                                                                                                              \
+        fprintf(stderr, "duel_evolve: %sout of memory\n", pre);                                                       \
+        rc = 1;                                                                                                       \
+        goto out;                                                                                                     \
+    } while (0)
+
+/* Every candidate opened, then the rankings not among them; the pairs. 0 or 2/1 after one line. */
+static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
+                              uint32_t n_against, const char *pre)
+{
+    uint32_t i, j, k;
+    int rc = 2;
+    if (n_cand == 0 || n_against == 0) {
+        fprintf(stderr, "duel_evolve: %s%s\n", pre,
+                n_cand == 0 ? "which runs? (no candidate run before --against)" : "an empty ranking: --against names no run");
+        return 2;
+    }
+    if ((uint64_t)n_cand + n_against > DUEL_PERF_MAX_RUNS) {
+        fprintf(stderr, "duel_evolve: %s%u runs, at most %d\n", pre, n_cand + n_against, DUEL_PERF_MAX_RUNS);
+        return 2;
+    }
+    m->n_cand = n_cand;
+    m->runs = (duel_perf_run *)calloc((size_t)n_cand + n_against, sizeof *m->runs);
+    m->rank = (uint32_t *)calloc(n_against, sizeof *m->rank);
+    if (m->runs == NULL || m->rank == NULL)
+        DUEL_PERF_OOM(m);
+    for (i = 0; i < n_cand; i++) {
+        if (duel_perf_open(&m->runs[m->n_runs], cand[i], pre) != 0)
+            goto out;
+        m->n_runs++;
+        for (j = 0; j < i; j++)
+            if (strcmp(m->runs[j].real, m->runs[i].real) == 0) {
+                fprintf(stderr, "duel_evolve: %s%s is given twice as a candidate\n", pre, cand[i]);
+                goto out;
+            }
+    }
+    for (i = 0; i < n_against; i++) {
+        duel_perf_run r;
+        if (duel_perf_open(&r, against[i], pre) != 0)
+            goto out;
+        for (j = 0; j < m->n_runs && strcmp(m->runs[j].real, r.real) != 0; j++)
+            ;
+        for (k = 0; k < m->n_rank; k++)
+            if (m->rank[k] == j) {
+                fprintf(stderr, "duel_evolve: %s%s is given twice after --against\n", pre, against[i]);
+                duel_perf_close(&r);
+                goto out;
+            }
+        if (j == m->n_runs)
+            m->runs[m->n_runs++] = r;
+        else
+            duel_perf_close(&r); /* a candidate too: already open */
+        m->rank[m->n_rank++] = j;
+    }
+
+    /* the pairs: every candidate against every ranking but its own */
+    m->pairs = (duel_perf_pair *)calloc((size_t)m->n_cand * m->n_rank, sizeof *m->pairs);
+    m->perf_hi = (double *)calloc(m->n_cand, sizeof(double));
+    m->perf_co = (double *)calloc(m->n_cand, sizeof(double));
+    m->gen_hi = (double *)calloc(m->n_cand, sizeof(double));
+    m->gen_co = (double *)calloc(m->n_cand, sizeof(double));
+    m->pair_hi = (double *)calloc((size_t)m->n_cand * m->n_rank + 1, sizeof(double));
+    m->pair_co = (double *)calloc((size_t)m->n_cand * m->n_rank + 1, sizeof(double));
+    if (m->pairs == NULL || m->perf_hi == NULL || m->perf_co == NULL || m->gen_hi == NULL || m->gen_co == NULL ||
+        m->pair_hi == NULL || m->pair_co == NULL)
+        DUEL_PERF_OOM(m);
+    for (i = 0; i < m->n_cand; i++) {
+        uint32_t mine = 0;
+        for (k = 0; k < m->n_rank; k++) {
+            duel_perf_pair *p = &m->pairs[m->n_pairs];
+            if (m->rank[k] == i)
+                continue;
+            p->cand = i;
+            p->rank = m->rank[k];
+            p->t = (duel_tally *)calloc(m->runs[p->rank].n_levels, sizeof *p->t);
+            if (p->t == NULL)
+                DUEL_PERF_OOM(m);
+            m->n_pairs++;
+            mine++;
+        }
+        if (mine == 0) {
+            fprintf(stderr, "duel_evolve: %s%s: an empty ranking: --against names no run but itself\n", pre,
+                    m->runs[i].dir);
+            goto out;
+        }
+    }
+    rc = 0;
+out:
+    return rc;
+}
+
+int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
+                      uint32_t n_against, const duel_perf_opts *o)
+{
+    duel_cmp_cache *caches = NULL, shared;
+    duel_pair *jobs = NULL;
+    uint32_t *slot = NULL;
+    uint32_t i, k, l, n_jobs = 0;
+    size_t total = 0, at = 0;
+    const char *pre = o->prefix ? o->prefix : "";
+    char err[4400];
+    int rc;
+
+    memset(m, 0, sizeof *m);
+    memset(&shared, 0, sizeof shared);
+    rc = duel_perf_open_all(m, cand, n_cand, against, n_against, pre);
+    if (rc != 0)
+        goto out;
+    rc = 2;
+
+    /* the caches: one per candidate run (RUN/compare-cache.csv), or one for all */
+    caches = (duel_cmp_cache *)calloc(m->n_cand, sizeof *caches);
+    if (caches == NULL)
+        DUEL_PERF_OOM(m);
+    if (o->cache_path != NULL && duel_cmp_cache_open(&shared, o->cache_path, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
+        goto out;
+    }
+    for (i = 0; i < m->n_cand && o->cache_path == NULL; i++) {
+        char path[4200];
+        snprintf(path, sizeof path, "%s/compare-cache.csv", m->runs[i].dir);
+        if (duel_cmp_cache_open(&caches[i], path, err, sizeof err) != 0) {
+            fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
+            goto out;
+        }
+    }
+
+    /* what the caches do not hold: one job per (pair, level), found again through slot */
+    for (k = 0; k < m->n_pairs; k++)
+        total += m->runs[m->pairs[k].rank].n_levels;
+    jobs = (duel_pair *)calloc(total + 1, sizeof *jobs);
+    slot = (uint32_t *)calloc(total + 1, sizeof *slot);
+    if (jobs == NULL || slot == NULL)
+        DUEL_PERF_OOM(m);
+    for (k = 0; k < m->n_pairs; k++) {
+        duel_perf_pair *p = &m->pairs[k];
+        duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
+        duel_cmp_cache *cc = o->cache_path ? &shared : &caches[p->cand];
+        for (l = 0; l < r->n_levels; l++, at++) {
+            const duel_tally *t = duel_cmp_cache_find(cc, c->top_hash, r->hash[l]);
+            if (t != NULL) {
+                p->t[l] = *t;
+                slot[at] = UINT32_MAX;
+                m->cached++;
+            } else {
+                jobs[n_jobs].a = &c->levels[c->n_levels - 1].ctrl;
+                jobs[n_jobs].b = &r->levels[l].ctrl;
+                slot[at] = n_jobs++;
+            }
+        }
+    }
+    if (n_jobs > 0 && o->mode == DUEL_PERF_CACHE_ONLY) {
+        fprintf(stderr, "duel_evolve: %s%u comparisons are not in the caches (the first: %s against %s): they would "
+                        "have to be played\n", pre, n_jobs, jobs[0].a->name, jobs[0].b->name);
+        goto out;
+    }
+    if (n_jobs > 0 && duel_pairs_play(jobs, n_jobs, o->threads, o->progress ? duel_perf_progress : NULL,
+                                      (void *)pre) != 0) {
+        fprintf(stderr, "duel_evolve: %sa comparison failed (out of memory)\n", pre);
+        rc = 1;
+        goto out;
+    }
+    m->played = n_jobs;
+    /* into the pairs and the caches, which are saved at once */
+    for (k = 0, at = 0; k < m->n_pairs; k++) {
+        duel_perf_pair *p = &m->pairs[k];
+        duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
+        duel_cmp_cache *cc = o->cache_path ? &shared : &caches[p->cand];
+        for (l = 0; l < r->n_levels; l++, at++) {
+            if (slot[at] == UINT32_MAX)
+                continue;
+            p->t[l] = jobs[slot[at]].tally;
+            if (duel_cmp_cache_add(cc, c->top_hash, r->hash[l], &p->t[l]) != 0)
+                DUEL_PERF_OOM(m);
+        }
+        duel_perf_readings(p, r->n_levels);
+    }
+    for (i = 0; i < (o->cache_path ? 1u : m->n_cand); i++) {
+        duel_cmp_cache *cc = o->cache_path ? &shared : &caches[i];
+        if (duel_cmp_cache_save(cc) != 0)
+            fprintf(stderr, "duel_evolve: %s%s: cannot write the cache (%s); the results are not affected\n", pre,
+                    cc->path, strerror(errno));
+    }
+
+    /* per candidate: the means over its rankings */
+    for (i = 0, k = 0; i < m->n_cand; i++) {
+        uint32_t n = 0;
+        for (; k < m->n_pairs && m->pairs[k].cand == i; k++, n++) {
+            const duel_perf_pair *p = &m->pairs[k];
+            m->pair_hi[k] = duel_perf_level_share(m, p, p->highest);
+            m->pair_co[k] = duel_perf_level_share(m, p, p->contiguous);
+            m->perf_hi[i] += m->pair_hi[k];
+            m->perf_co[i] += m->pair_co[k];
+            m->gen_hi[i] += duel_perf_gen(m, p, p->highest);
+            m->gen_co[i] += duel_perf_gen(m, p, p->contiguous);
+        }
+        m->perf_hi[i] /= n;
+        m->perf_co[i] /= n;
+        m->gen_hi[i] /= n;
+        m->gen_co[i] /= n;
+    }
+    rc = 0;
+out:
+    free(jobs);
+    free(slot);
+    for (i = 0; caches != NULL && i < m->n_cand; i++)
+        duel_cmp_cache_free(&caches[i]);
+    free(caches);
+    duel_cmp_cache_free(&shared);
+    return rc;
+}
+
+void duel_perf_free(duel_perf *m)
+{
+    uint32_t i, k;
+    free(m->pair_hi);
+    free(m->pair_co);
+    for (k = 0; m->pairs != NULL && k < m->n_pairs; k++)
+        free(m->pairs[k].t);
+    free(m->pairs);
+    for (i = 0; m->runs != NULL && i < m->n_runs; i++)
+        duel_perf_close(&m->runs[i]);
+    free(m->runs);
+    free(m->rank);
+    free(m->perf_hi);
+    free(m->perf_co);
+    free(m->gen_hi);
+    free(m->gen_co);
+    memset(m, 0, sizeof *m);
+}

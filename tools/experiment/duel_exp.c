@@ -1,0 +1,778 @@
+/* duel_exp.c - an experiment's runs played side by side as child processes, continued after any interruption, the best-topology champion chosen, every method compared and laddered. */
+#define _GNU_SOURCE /* prctl's PR_SET_PDEATHSIG, and the POSIX calls */
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
+#include "duel_ctrl.h"
+#include "duel_exp.h"
+#include "duel_files.h"
+#include "duel_perf.h"
+#include "neat_coev.h"
+
+/* Set by SIGINT/SIGTERM: the runs finish their generation and stop (they get the signal too). */
+static volatile sig_atomic_t duel_exp_stop = 0;
+
+static void duel_exp_on_signal(int sig)
+{
+    (void)sig;
+    duel_exp_stop = 1;
+}
+
+void duel_exp_run_dir(char *out, size_t cap, const duel_plan *p, uint32_t i, uint32_t k)
+{
+    snprintf(out, cap, "runs/%s-%u", p->m[i].name, k);
+}
+
+static double duel_exp_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* ---- the directory: a new one, or one of this very plan */
+
+/* Every entry of runs/ is a run of the plan, and each run's config.ini is the one the plan gives it. 0, or 2
+ * after one line. */
+static int duel_exp_check_runs(const duel_plan *p, const char *dir)
+{
+    DIR *d = opendir("runs");
+    struct dirent *e;
+    int rc = 0;
+    if (d == NULL)
+        return 0; /* no run yet */
+    while (rc == 0 && (e = readdir(d)) != NULL) {
+        uint32_t i, k = 0;
+        char name[600], path[700], want_line[300], have_line[300];
+        uint8_t *have;
+        size_t len;
+        char *want;
+        if (e->d_name[0] == '.')
+            continue;
+        for (i = 0; i < p->n_methods; i++) {
+            size_t n = strlen(p->m[i].name);
+            char *end;
+            unsigned long v;
+            if (strncmp(e->d_name, p->m[i].name, n) != 0 || e->d_name[n] != '-' || e->d_name[n + 1] < '1' ||
+                e->d_name[n + 1] > '9')
+                continue;
+            v = strtoul(e->d_name + n + 1, &end, 10);
+            if (*end == '\0' && v >= 1 && v <= p->m[i].runs) {
+                k = (uint32_t)v;
+                break;
+            }
+        }
+        if (k == 0) {
+            fprintf(stderr, "duel_evolve: experiment: %s/runs/%s is no run of this plan (its runs are NAME-1 to "
+                            "NAME-RUNS of each [method NAME]): move it away, or use another directory\n", dir,
+                    e->d_name);
+            rc = 2;
+            break;
+        }
+        snprintf(name, sizeof name, "runs/%s", e->d_name);
+        snprintf(path, sizeof path, "%s/config.ini", name);
+        if (duel_file_read(path, 1u << 20, &have, &len) != 0)
+            continue; /* died before writing it: the run starts over */
+        want = duel_plan_run_config(p, i, k);
+        if (want == NULL) {
+            free(have);
+            fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+            rc = 1;
+            break;
+        }
+        have = (uint8_t *)realloc(have, len + 1);
+        if (have != NULL) {
+            uint32_t line;
+            have[len] = '\0';
+            line = duel_plan_diff((const char *)have, want, have_line, want_line, sizeof have_line);
+            if (line != 0) {
+                fprintf(stderr, "duel_evolve: experiment: %s/%s belongs to another plan: line %u is '%s', the plan "
+                                "gives '%s'\n", dir, path, line, have_line, want_line);
+                rc = 2;
+            }
+        } else {
+            fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+            rc = 1;
+        }
+        free(have);
+        free(want);
+    }
+    closedir(d);
+    return rc;
+}
+
+/* dir created (or found), entered and locked, and holding this plan. 0, or the exit status after one line. */
+int duel_exp_enter(const duel_plan *p, const char *dir, int create)
+{
+    struct stat st;
+    char *text = duel_plan_text(p);
+    uint8_t *have;
+    size_t len;
+    int fd, rc;
+    if (text == NULL) {
+        fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+        return 1;
+    }
+    if (stat(dir, &st) != 0) {
+        if (!create) {
+            fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir, strerror(errno));
+            free(text);
+            return 2;
+        }
+        if (duel_mkdir(dir) != 0) {
+            fprintf(stderr, "duel_evolve: experiment: %s: cannot create: %s\n", dir, strerror(errno));
+            free(text);
+            return 2;
+        }
+    } else if (!S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "duel_evolve: experiment: %s: not a directory\n", dir);
+        free(text);
+        return 2;
+    }
+    if (chdir(dir) != 0) {
+        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir, strerror(errno));
+        free(text);
+        return 2;
+    }
+    fd = duel_dir_lock(".");
+    if (fd < 0) {
+        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir,
+                errno == EWOULDBLOCK ? "another duel_evolve experiment is working in it" : strerror(errno));
+        free(text);
+        return 2;
+    }
+    rc = duel_file_read("plan.ini", 1u << 20, &have, &len);
+    if (rc == 0) {
+        char la[300], lb[300];
+        uint32_t line;
+        uint8_t *h = (uint8_t *)realloc(have, len + 1);
+        if (h == NULL) {
+            free(have);
+            free(text);
+            fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+            return 1;
+        }
+        h[len] = '\0';
+        line = duel_plan_diff((const char *)h, text, la, lb, sizeof la);
+        free(h);
+        if (line != 0) {
+            fprintf(stderr, "duel_evolve: experiment: %s/plan.ini holds another plan: line %u is '%s', this plan "
+                            "gives '%s' (a changed plan needs a new directory)\n", dir, line, la, lb);
+            free(text);
+            return 2;
+        }
+    } else if (errno != ENOENT) {
+        fprintf(stderr, "duel_evolve: experiment: %s/plan.ini: %s\n", dir, strerror(errno));
+        free(text);
+        return 2;
+    } else {
+        /* no plan.ini: only an empty directory becomes an experiment (the lock file aside) */
+        DIR *d = opendir(".");
+        struct dirent *e;
+        int other = 0;
+        while (d != NULL && (e = readdir(d)) != NULL)
+            other |= strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0 && strcmp(e->d_name, ".lock") != 0;
+        if (d != NULL)
+            closedir(d);
+        if (other || !create) {
+            fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir,
+                    create ? "not empty and not an experiment directory (no plan.ini): choose another --out"
+                           : "not an experiment directory (no plan.ini)");
+            free(text);
+            return 2;
+        }
+    }
+    free(text);
+    /* the stored method configurations are the plan's (a changed preset is a changed plan) */
+    {
+        uint32_t i;
+        for (i = 0; i < p->n_methods; i++) {
+            char path[200], la[300], lb[300];
+            uint8_t *c;
+            size_t n;
+            snprintf(path, sizeof path, "configs/%s.ini", p->m[i].name);
+            if (duel_file_read(path, 1u << 20, &c, &n) != 0)
+                continue;
+            if ((have = (uint8_t *)realloc(c, n + 1)) == NULL) {
+                free(c);
+                fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+                return 1;
+            }
+            have[n] = '\0';
+            if (duel_plan_diff((const char *)have, p->m[i].cfg_text, la, lb, sizeof la) != 0) {
+                fprintf(stderr, "duel_evolve: experiment: %s/%s differs from what the plan's preset gives now "
+                                "('%s' there, '%s' now): a changed plan needs a new directory\n", dir, path, la, lb);
+                free(have);
+                return 2;
+            }
+            free(have);
+        }
+    }
+    rc = duel_exp_check_runs(p, dir);
+    if (rc != 0)
+        return rc;
+    if (create && duel_plan_save(p, ".") != 0)
+        return 1;
+    return 0;
+}
+
+/* ---- one run: its state, the child process that plays it, its progress */
+
+enum { DUEL_RUN_NEW = 0, DUEL_RUN_PARTIAL = 1, DUEL_RUN_DONE = 2 };
+
+typedef struct duel_exp_run_state {
+    uint32_t method, k, generations;
+    char dir[300];
+    int state;
+    pid_t pid;                 /* running: its child */
+    uint32_t gen_done;         /* from generations.csv, for the progress line */
+    double seconds;            /* the seconds of the generations recorded */
+} duel_exp_run_state;
+
+/* generations.csv of a run: the last generation recorded and the seconds of them all (population A's rows). */
+static void duel_exp_progress_of(duel_exp_run_state *r)
+{
+    char path[400];
+    uint8_t *data;
+    size_t len, i, start = 0;
+    uint32_t last = 0;
+    double secs = 0.0;
+    snprintf(path, sizeof path, "%s/generations.csv", r->dir);
+    if (duel_file_read(path, 64u << 20, &data, &len) != 0)
+        return;
+    for (i = 0; i < len; i++) {
+        if (data[i] != '\n')
+            continue;
+        if (start > 0 && i - start > 4) {
+            char row[512], *comma;
+            size_t n = i - start < sizeof row - 1 ? i - start : sizeof row - 1;
+            memcpy(row, data + start, n);
+            row[n] = '\0';
+            comma = strchr(row, ',');
+            if (comma != NULL && comma[1] == 'A') {
+                last = (uint32_t)strtoul(row, NULL, 10) + 1;
+                comma = strrchr(row, ',');
+                secs += strtod(comma + 1, NULL);
+            }
+        }
+        start = i + 1;
+    }
+    free(data);
+    r->gen_done = last;
+    r->seconds = secs;
+}
+
+static int duel_exp_state(duel_exp_run_state *r)
+{
+    char path[400];
+    neat_coev *c;
+    int e;
+    snprintf(path, sizeof path, "%s/checkpoint.bin", r->dir);
+    e = duel_ckpt_load("experiment: ", path, &c);
+    if (e < 0)
+        return -1;
+    if (e > 0) {
+        r->state = DUEL_RUN_NEW;
+        return 0;
+    }
+    r->state = neat_coev_generation(c) >= r->generations ? DUEL_RUN_DONE : DUEL_RUN_PARTIAL;
+    neat_coev_free(c);
+    return 0;
+}
+
+/* The duel_evolve binary that is running this experiment. */
+static int duel_exp_self(char *out, size_t cap)
+{
+    ssize_t n = readlink("/proc/self/exe", out, cap - 1);
+    if (n <= 0 || (size_t)n >= cap - 1)
+        return -1;
+    out[n] = '\0';
+    return 0;
+}
+
+/* Starts `duel_evolve ARGS` in a child that dies with us (kill -9 of the experiment leaves no run holding its
+ * directory's lock), its standard output to /dev/null when quiet_out. The pid, or -1. */
+static pid_t duel_exp_spawn(const char *self, char *const *args, int quiet_out)
+{
+    pid_t parent = getpid(), pid = fork();
+    if (pid != 0)
+        return pid;
+#ifdef __linux__
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
+    if (getppid() != parent)
+        _exit(127);
+    if (quiet_out) {
+        int fd = open("/dev/null", O_WRONLY);
+        if (fd >= 0) {
+            dup2(fd, STDOUT_FILENO);
+            close(fd);
+        }
+    }
+    execv(self, args);
+    fprintf(stderr, "duel_evolve: experiment: cannot start %s: %s\n", self, strerror(errno));
+    _exit(127);
+}
+
+static pid_t duel_exp_start_run(const char *self, const duel_plan *p, duel_exp_run_state *r, uint32_t threads)
+{
+    char cfg[200], seed[16], thr[16];
+    char *argv[16];
+    int n = 0;
+    snprintf(thr, sizeof thr, "%u", threads);
+    argv[n++] = (char *)"duel_evolve";
+    if (r->state == DUEL_RUN_NEW) {
+        snprintf(cfg, sizeof cfg, "configs/%s.ini", p->m[r->method].name);
+        snprintf(seed, sizeof seed, "%u", p->seed + (r->k - 1));
+        argv[n++] = (char *)"run";
+        argv[n++] = (char *)"--config";
+        argv[n++] = cfg;
+        argv[n++] = (char *)"--seed";
+        argv[n++] = seed;
+        argv[n++] = (char *)"--out";
+        argv[n++] = r->dir;
+    } else {
+        argv[n++] = (char *)"resume";
+        argv[n++] = r->dir;
+    }
+    argv[n++] = (char *)"--threads";
+    argv[n++] = thr;
+    argv[n++] = (char *)"--quiet";
+    argv[n] = NULL;
+    return duel_exp_spawn(self, argv, 1);
+}
+
+static void duel_exp_hms(char *out, size_t cap, double s)
+{
+    unsigned long t = s > 0 ? (unsigned long)(s + 0.5) : 0;
+    snprintf(out, cap, "%lu:%02lu:%02lu", t / 3600, t / 60 % 60, t % 60);
+}
+
+typedef struct duel_exp_sched {
+    const duel_plan *p;
+    duel_exp_run_state *runs;
+    uint32_t n_runs, done;
+    int tty, quiet;
+    double started, last_line;
+} duel_exp_sched;
+
+/* Seconds a generation of method i takes: measured on its runs so far, else the mean of all runs. */
+static double duel_exp_rate(const duel_exp_sched *s, uint32_t method)
+{
+    double secs = 0.0, all_secs = 0.0;
+    uint32_t gens = 0, all_gens = 0, k;
+    for (k = 0; k < s->n_runs; k++) {
+        const duel_exp_run_state *r = &s->runs[k];
+        all_secs += r->seconds;
+        all_gens += r->gen_done;
+        if (r->method == method) {
+            secs += r->seconds;
+            gens += r->gen_done;
+        }
+    }
+    if (gens > 0)
+        return secs / gens;
+    return all_gens > 0 ? all_secs / all_gens : 0.0;
+}
+
+static void duel_exp_show(duel_exp_sched *s, uint32_t jobs, int final)
+{
+    char line[1024], eta[32];
+    size_t n = 0;
+    double left = 0.0;
+    uint32_t k, running = 0;
+    double now = duel_exp_now();
+    if (s->quiet || (!final && now - s->last_line < (s->tty ? 1.0 : 60.0)))
+        return;
+    s->last_line = now;
+    for (k = 0; k < s->n_runs; k++) {
+        duel_exp_run_state *r = &s->runs[k];
+        if (r->pid > 0)
+            duel_exp_progress_of(r);
+        if (r->state != DUEL_RUN_DONE)
+            left += duel_exp_rate(s, r->method) * (double)(r->generations - (r->gen_done < r->generations ? r->gen_done : r->generations));
+    }
+    if (left > 0.0)
+        duel_exp_hms(eta, sizeof eta, left / (jobs ? jobs : 1));
+    else
+        snprintf(eta, sizeof eta, "%s", s->done == s->n_runs ? "0:00:00" : "(measuring)");
+    n += (size_t)snprintf(line + n, sizeof line - n, "experiment: %u/%u runs done", s->done, s->n_runs);
+    for (k = 0; k < s->n_runs && n < sizeof line - 80; k++)
+        if (s->runs[k].pid > 0)
+            n += (size_t)snprintf(line + n, sizeof line - n, "%s %s %u/%u", running++ ? "," : ";",
+                                  s->runs[k].dir + 5, s->runs[k].gen_done, s->runs[k].generations);
+    snprintf(line + n, sizeof line - n, "; runs left about %s", eta);
+    if (s->tty)
+        fprintf(stderr, "\r%s\033[K", line);
+    else
+        fprintf(stderr, "%s\n", line);
+}
+
+/* ---- the best-topology champion */
+
+/* The reference method's champion with the highest performance against the other reference runs' rankings
+ * ("highest" reading, then "contiguous", then the first run), copied to best-topology.blob and described in
+ * best-topology.txt. 0, or the exit status after one line. */
+static int duel_exp_choose_best(const duel_plan *p, uint32_t threads)
+{
+    const duel_plan_method *m = &p->m[p->ref];
+    const char **dirs = (const char **)calloc(m->runs, sizeof *dirs);
+    char (*names)[300] = (char (*)[300])calloc(m->runs, sizeof *names);
+    duel_perf perf;
+    duel_perf_opts o;
+    uint32_t k, best = 0;
+    int rc;
+    if (dirs == NULL || names == NULL) {
+        free(dirs);
+        free(names);
+        fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+        return 1;
+    }
+    for (k = 0; k < m->runs; k++) {
+        duel_exp_run_dir(names[k], sizeof names[k], p, p->ref, k + 1);
+        dirs[k] = names[k];
+    }
+    memset(&o, 0, sizeof o);
+    o.threads = threads;
+    o.prefix = "experiment: ";
+    o.progress = isatty(STDERR_FILENO);
+    rc = duel_perf_measure(&perf, dirs, m->runs, dirs, m->runs, &o);
+    if (rc == 0) {
+        const duel_level *top;
+        char path[400], text[1200];
+        uint8_t *have;
+        size_t len;
+        for (k = 1; k < m->runs; k++)
+            if (perf.perf_hi[k] > perf.perf_hi[best] ||
+                (perf.perf_hi[k] == perf.perf_hi[best] && perf.perf_co[k] > perf.perf_co[best]))
+                best = k;
+        top = &perf.runs[best].levels[perf.runs[best].n_levels - 1];
+        snprintf(path, sizeof path, "%s/champions/gen-%05u.blob", names[best], top->generation);
+        snprintf(text, sizeof text,
+                 "; start = best of this experiment: the %s champion with the highest performance against the other "
+                 "%s runs' dominance rankings\nrun = %s\nchampion = %s\nlevel = %u\ngeneration = %u\nhidden = %u\n"
+                 "connections = %u\nperformance_highest = %.6f\nperformance_contiguous = %.6f\n",
+                 m->name, m->name, names[best] + 5, path, perf.runs[best].n_levels, top->generation, top->hidden,
+                 top->conns, perf.perf_hi[best], perf.perf_co[best]);
+        if (duel_file_read(DUEL_PLAN_BEST_BLOB, DUEL_CKPT_MAX, &have, &len) == 0) {
+            int same = len == top->ctrl.blob_len && memcmp(have, top->ctrl.blob, len) == 0;
+            free(have);
+            if (!same) {
+                fprintf(stderr, "duel_evolve: experiment: %s is not %s, the champion this plan chooses: it was "
+                                "changed by hand\n", DUEL_PLAN_BEST_BLOB, path);
+                rc = 2;
+            }
+        } else if (duel_file_replace(DUEL_PLAN_BEST_BLOB, top->ctrl.blob, top->ctrl.blob_len) != 0) {
+            fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", DUEL_PLAN_BEST_BLOB, strerror(errno));
+            rc = 1;
+        }
+        if (rc == 0 && duel_file_replace("best-topology.txt", text, strlen(text)) != 0) {
+            fprintf(stderr, "duel_evolve: experiment: best-topology.txt: cannot write: %s\n", strerror(errno));
+            rc = 1;
+        }
+        if (rc == 0)
+            fprintf(stderr, "experiment: the best %s champion: %s (level %u, %u hidden, %u connections, performance "
+                            "%.1f %%)\n", m->name, path, perf.runs[best].n_levels, top->hidden, top->conns,
+                    100.0 * perf.perf_hi[best]);
+    }
+    duel_perf_free(&perf);
+    free(dirs);
+    free(names);
+    return rc;
+}
+
+/* ---- the whole experiment */
+
+static int duel_exp_any_best(const duel_plan *p)
+{
+    uint32_t i;
+    for (i = 0; i < p->n_methods; i++)
+        if (p->m[i].start_best)
+            return 1;
+    return 0;
+}
+
+/* Every run of the plan to the end, jobs at a time: the reference method's first, the start = best methods' once
+ * the champion is chosen. 0, or the exit status after one line. */
+static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs, uint32_t threads,
+                              uint32_t cmp_threads)
+{
+    const duel_plan *p = s->p;
+    uint32_t k, running = 0, ref_left = 0;
+    int best_ready = !duel_exp_any_best(p), failed = 0;
+    int forwarded = 0;
+    for (k = 0; k < s->n_runs; k++)
+        ref_left += s->runs[k].method == p->ref && s->runs[k].state != DUEL_RUN_DONE;
+    for (;;) {
+        int status;
+        pid_t pid;
+        if (!best_ready && ref_left == 0) {
+            int rc;
+            if (running > 0)
+                goto wait; /* the comparisons take every core: after the runs now going */
+            if (s->tty && !s->quiet)
+                fprintf(stderr, "\r\033[K");
+            rc = duel_exp_choose_best(p, cmp_threads);
+            if (rc != 0)
+                return rc;
+            best_ready = 1;
+        }
+        /* start what may start */
+        for (k = 0; k < s->n_runs && running < jobs && !duel_exp_stop && !failed; k++) {
+            duel_exp_run_state *r = &s->runs[k];
+            if (r->state == DUEL_RUN_DONE || r->pid != 0 || (p->m[r->method].start_best && !best_ready))
+                continue;
+            r->pid = duel_exp_start_run(self, p, r, threads);
+            if (r->pid < 0) {
+                fprintf(stderr, "duel_evolve: experiment: cannot start a run: %s\n", strerror(errno));
+                r->pid = 0;
+                failed = 1;
+                break;
+            }
+            running++;
+        }
+        if (running == 0)
+            break;
+    wait:
+        if (duel_exp_stop && !forwarded) {
+            /* a signal to this process alone (kill -INT): the runs finish their generation and save it */
+            for (k = 0; k < s->n_runs; k++)
+                if (s->runs[k].pid > 0)
+                    kill(s->runs[k].pid, SIGINT);
+            forwarded = 1;
+        }
+        duel_exp_show(s, jobs, 0);
+        pid = waitpid(-1, &status, WNOHANG);
+        if (pid == 0 || (pid < 0 && errno == EINTR)) {
+            struct timespec ts = {0, 200000000L};
+            nanosleep(&ts, NULL);
+            continue;
+        }
+        if (pid < 0)
+            break;
+        for (k = 0; k < s->n_runs && s->runs[k].pid != pid; k++)
+            ;
+        if (k == s->n_runs)
+            continue;
+        running--;
+        s->runs[k].pid = 0;
+        duel_exp_progress_of(&s->runs[k]);
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+            s->runs[k].state = DUEL_RUN_DONE;
+            s->done++;
+            ref_left -= s->runs[k].method == p->ref;
+        } else {
+            s->runs[k].state = DUEL_RUN_PARTIAL;
+            if (!duel_exp_stop) {
+                if (s->tty && !s->quiet)
+                    fprintf(stderr, "\r\033[K");
+                fprintf(stderr, "duel_evolve: experiment: %s failed (%s %d); its log: %s/log.txt\n", s->runs[k].dir,
+                        WIFEXITED(status) ? "exit status" : "signal",
+                        WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status), s->runs[k].dir);
+                failed = 1;
+            }
+        }
+    }
+    if (!s->quiet) {
+        duel_exp_show(s, jobs, 1);
+        if (s->tty)
+            fprintf(stderr, "\n");
+    }
+    if (duel_exp_stop)
+        return 130;
+    return failed ? 1 : 0;
+}
+
+/* Every method's runs against the reference rankings (played once, then cached in each run). */
+static int duel_exp_compare_all(const duel_plan *p, uint32_t threads)
+{
+    uint32_t i, k;
+    const duel_plan_method *ref = &p->m[p->ref];
+    for (i = 0; i < p->n_methods && !duel_exp_stop; i++) {
+        const duel_plan_method *m = &p->m[i];
+        const char **cand = (const char **)calloc(m->runs, sizeof *cand);
+        const char **against = (const char **)calloc(ref->runs, sizeof *against);
+        char (*cn)[300] = (char (*)[300])calloc(m->runs, sizeof *cn);
+        char (*an)[300] = (char (*)[300])calloc(ref->runs, sizeof *an);
+        duel_perf perf;
+        duel_perf_opts o;
+        char prefix[100];
+        int rc = 1;
+        if (cand != NULL && against != NULL && cn != NULL && an != NULL) {
+            for (k = 0; k < m->runs; k++) {
+                duel_exp_run_dir(cn[k], sizeof cn[k], p, i, k + 1);
+                cand[k] = cn[k];
+            }
+            for (k = 0; k < ref->runs; k++) {
+                duel_exp_run_dir(an[k], sizeof an[k], p, p->ref, k + 1);
+                against[k] = an[k];
+            }
+            snprintf(prefix, sizeof prefix, "experiment: %s: ", m->name);
+            memset(&o, 0, sizeof o);
+            o.threads = threads;
+            o.prefix = prefix;
+            o.progress = isatty(STDERR_FILENO);
+            rc = duel_perf_measure(&perf, cand, m->runs, against, ref->runs, &o);
+            duel_perf_free(&perf);
+        } else {
+            fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+        }
+        free(cand);
+        free(against);
+        free(cn);
+        free(an);
+        if (rc != 0)
+            return rc;
+    }
+    return duel_exp_stop ? 130 : 0;
+}
+
+/* `duel_evolve ladder RUN` for each run without its ladder.csv, jobs at a time. */
+static int duel_exp_ladders(const duel_exp_sched *s, const char *self, uint32_t jobs)
+{
+    uint32_t k = 0, running = 0;
+    int failed = 0;
+    pid_t *pids = (pid_t *)calloc(s->n_runs, sizeof *pids);
+    if (pids == NULL) {
+        fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+        return 1;
+    }
+    for (;;) {
+        int status;
+        pid_t pid;
+        uint32_t j;
+        for (; k < s->n_runs && running < jobs && !duel_exp_stop && !failed; k++) {
+            char path[400];
+            struct stat st;
+            char *argv[4];
+            snprintf(path, sizeof path, "%s/ladder.csv", s->runs[k].dir);
+            if (stat(path, &st) == 0)
+                continue;
+            argv[0] = (char *)"duel_evolve";
+            argv[1] = (char *)"ladder";
+            argv[2] = (char *)s->runs[k].dir;
+            argv[3] = NULL;
+            pids[k] = duel_exp_spawn(self, argv, 1);
+            if (pids[k] < 0) {
+                pids[k] = 0;
+                failed = 1;
+                break;
+            }
+            running++;
+        }
+        if (running == 0)
+            break;
+        pid = waitpid(-1, &status, 0);
+        if (pid < 0) {
+            if (errno == EINTR)
+                continue;
+            break;
+        }
+        for (j = 0; j < s->n_runs && pids[j] != pid; j++)
+            ;
+        if (j == s->n_runs)
+            continue;
+        running--;
+        pids[j] = 0;
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+            if (!duel_exp_stop)
+                fprintf(stderr, "duel_evolve: experiment: duel_evolve ladder %s failed\n", s->runs[j].dir);
+            failed = 1;
+        }
+    }
+    free(pids);
+    if (duel_exp_stop)
+        return 130;
+    return failed ? 1 : 0;
+}
+
+int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
+{
+    duel_exp_sched s;
+    struct sigaction sa;
+    char self[4096];
+    uint32_t i, k, jobs, threads, cores;
+    long nproc = sysconf(_SC_NPROCESSORS_ONLN);
+    int rc;
+
+    cores = nproc > 0 ? (uint32_t)nproc : 1;
+    jobs = o->jobs ? o->jobs : cores;
+    threads = o->threads ? o->threads : (cores / jobs ? cores / jobs : 1);
+    if (duel_exp_self(self, sizeof self) != 0) {
+        fprintf(stderr, "duel_evolve: experiment: cannot find this program (/proc/self/exe): %s\n", strerror(errno));
+        return 1;
+    }
+    rc = duel_exp_enter(p, dir, 1);
+    if (rc != 0)
+        return rc;
+    memset(&s, 0, sizeof s);
+    s.p = p;
+    s.tty = isatty(STDERR_FILENO);
+    s.quiet = o->quiet;
+    s.started = duel_exp_now();
+    for (i = 0; i < p->n_methods; i++)
+        s.n_runs += p->m[i].runs;
+    s.runs = (duel_exp_run_state *)calloc(s.n_runs, sizeof *s.runs);
+    if (s.runs == NULL) {
+        fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+        return 1;
+    }
+    /* the reference method's runs first: the best-topology champion needs them */
+    for (i = 0, s.n_runs = 0; i < p->n_methods; i++) {
+        uint32_t m = i == 0 ? p->ref : (i <= p->ref ? i - 1 : i);
+        for (k = 1; k <= p->m[m].runs; k++) {
+            duel_exp_run_state *r = &s.runs[s.n_runs++];
+            r->method = m;
+            r->k = k;
+            r->generations = p->m[m].cfg.generations;
+            duel_exp_run_dir(r->dir, sizeof r->dir, p, m, k);
+            if (duel_exp_state(r) != 0) {
+                free(s.runs);
+                return 2;
+            }
+            duel_exp_progress_of(r);
+            s.done += r->state == DUEL_RUN_DONE;
+        }
+    }
+    if (duel_mkdir("runs") != 0) {
+        fprintf(stderr, "duel_evolve: experiment: %s/runs: cannot create: %s\n", dir, strerror(errno));
+        free(s.runs);
+        return 1;
+    }
+    if (!o->quiet)
+        fprintf(stderr, "experiment %s: %u methods, %u runs (%u done), %u side by side with %u thread%s each\n", dir,
+                p->n_methods, s.n_runs, s.done, jobs, threads, threads == 1 ? "" : "s");
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = duel_exp_on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    rc = duel_exp_play_runs(&s, self, jobs, threads, o->threads ? o->threads : 0);
+    if (rc == 0 && !o->quiet)
+        fprintf(stderr, "experiment: every method against the %s rankings\n", p->reference);
+    if (rc == 0)
+        rc = duel_exp_compare_all(p, o->threads ? o->threads : 0);
+    if (rc == 0)
+        rc = duel_exp_ladders(&s, self, jobs);
+    free(s.runs);
+    if (rc == 130) {
+        fprintf(stderr, "duel_evolve: experiment: interrupted; what is done is kept. Continue with: duel_evolve "
+                        "experiment resume %s\n", dir);
+        return rc;
+    }
+    if (rc != 0)
+        return rc;
+    return duel_exp_report_here(p, dir);
+}

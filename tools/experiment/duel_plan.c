@@ -1,0 +1,406 @@
+/* duel_plan.c - an experiment's plan read from its INI file (or from an experiment directory), each method's run configuration built from its preset and the overrides. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "duel_files.h"
+#include "duel_plan.h"
+#include "neat_ini.h"
+
+#define DUEL_PLAN_HEADER "; the plan of this experiment (duel_evolve experiment): its methods' run configurations are configs/NAME.ini\n"
+#define DUEL_PLAN_CFG_HEADER "; the effective configuration of this run (duel_evolve config --dump format)\n"
+
+typedef struct duel_plan_reader {
+    duel_plan *p;
+    int in_all, in_experiment, method; /* the section: method index, or -1 */
+    int have_runs[DUEL_PLAN_MAX_METHODS], have_preset[DUEL_PLAN_MAX_METHODS];
+    int from_dir; /* plan.ini of an experiment directory: presets are not read */
+} duel_plan_reader;
+
+static int duel_plan_name_ok(const char *s)
+{
+    size_t n = strlen(s), k;
+    if (n == 0 || n > DUEL_PLAN_MAX_NAME)
+        return 0;
+    for (k = 0; k < n; k++)
+        if (!((s[k] >= 'a' && s[k] <= 'z') || (s[k] >= 'A' && s[k] <= 'Z') || (s[k] >= '0' && s[k] <= '9') ||
+              s[k] == '-' || s[k] == '_'))
+            return 0;
+    return 1;
+}
+
+static int duel_plan_u32(const char *v, uint32_t lo, uint32_t hi, uint32_t *out)
+{
+    char *end;
+    unsigned long x;
+    if (*v < '0' || *v > '9')
+        return -1;
+    errno = 0;
+    x = strtoul(v, &end, 10);
+    if (*end != '\0' || errno || x < lo || x > hi)
+        return -1;
+    *out = (uint32_t)x;
+    return 0;
+}
+
+static int duel_plan_add_set(char (*sets)[DUEL_PLAN_SET_LEN], uint32_t *n, const char *key, const char *value,
+                             char *err, size_t err_len)
+{
+    if (*n == DUEL_PLAN_MAX_SETS) {
+        snprintf(err, err_len, "more than %d overrides in one section", DUEL_PLAN_MAX_SETS);
+        return -1;
+    }
+    if (strlen(key) + strlen(value) + 2 > DUEL_PLAN_SET_LEN) {
+        snprintf(err, err_len, "'%s': too long", key);
+        return -1;
+    }
+    snprintf(sets[(*n)++], DUEL_PLAN_SET_LEN, "%s=%s", key, value);
+    return 0;
+}
+
+/* Each override is tried on a default configuration at once, so that an unknown key names its line. */
+static int duel_plan_try_set(const char *set, char *err, size_t err_len)
+{
+    duel_config c;
+    duel_config_default(&c);
+    return duel_config_set(&c, set, err, err_len);
+}
+
+static int duel_plan_handler(void *user, const char *section, const char *key, const char *value, char *err,
+                             size_t err_len)
+{
+    duel_plan_reader *r = (duel_plan_reader *)user;
+    duel_plan *p = r->p;
+    duel_plan_method *m;
+    if (strcmp(section, "experiment") == 0) {
+        if (strcmp(key, "reference") == 0) {
+            if (!duel_plan_name_ok(value)) {
+                snprintf(err, err_len, "reference = '%s': not a method name", value);
+                return -1;
+            }
+            strcpy(p->reference, value);
+        } else if (strcmp(key, "seed") == 0) {
+            if (duel_plan_u32(value, 0, 0xffffffffu, &p->seed) != 0) {
+                snprintf(err, err_len, "seed = '%s': expected 0 to 4294967295", value);
+                return -1;
+            }
+        } else if (strcmp(key, "presets") == 0 && !r->from_dir) {
+            if (strlen(value) >= sizeof p->presets) {
+                snprintf(err, err_len, "presets: a path too long");
+                return -1;
+            }
+            strcpy(p->presets, value);
+        } else {
+            snprintf(err, err_len, "unknown key '%s' in [experiment] (reference, seed, presets)", key);
+            return -1;
+        }
+        return 0;
+    }
+    if (strcmp(section, "all runs") == 0) {
+        if (duel_plan_add_set(p->sets, &p->n_sets, key, value, err, err_len) != 0)
+            return -1;
+        return duel_plan_try_set(p->sets[p->n_sets - 1], err, err_len);
+    }
+    if (strncmp(section, "method ", 7) != 0) {
+        snprintf(err, err_len, "unknown section [%s] ([experiment], [all runs], [method NAME])", section);
+        return -1;
+    }
+    section += 7;
+    while (*section == ' ')
+        section++;
+    if (!duel_plan_name_ok(section)) {
+        snprintf(err, err_len, "[method %s]: a method's name is 1 to %d letters, digits, '-' or '_'", section,
+                 DUEL_PLAN_MAX_NAME);
+        return -1;
+    }
+    if (p->n_methods == 0 || strcmp(p->m[p->n_methods - 1].name, section) != 0) {
+        uint32_t k;
+        for (k = 0; k < p->n_methods; k++)
+            if (strcmp(p->m[k].name, section) == 0) {
+                snprintf(err, err_len, "[method %s] a second time", section);
+                return -1;
+            }
+        if (p->n_methods == DUEL_PLAN_MAX_METHODS) {
+            snprintf(err, err_len, "more than %d methods", DUEL_PLAN_MAX_METHODS);
+            return -1;
+        }
+        strcpy(p->m[p->n_methods++].name, section);
+    }
+    m = &p->m[p->n_methods - 1];
+    if (strcmp(key, "preset") == 0) {
+        if (!duel_plan_name_ok(value)) {
+            snprintf(err, err_len, "preset = '%s': a preset's name (configs/NAME.ini without .ini)", value);
+            return -1;
+        }
+        strcpy(m->preset, value);
+        r->have_preset[p->n_methods - 1] = 1;
+    } else if (strcmp(key, "runs") == 0) {
+        if (duel_plan_u32(value, 1, DUEL_PLAN_MAX_RUNS, &m->runs) != 0) {
+            snprintf(err, err_len, "runs = '%s': expected 1 to %d", value, DUEL_PLAN_MAX_RUNS);
+            return -1;
+        }
+        r->have_runs[p->n_methods - 1] = 1;
+    } else if (strcmp(key, "start") == 0 && strcmp(value, "best") == 0) {
+        m->start_best = 1;
+    } else {
+        if (duel_plan_add_set(m->sets, &m->n_sets, key, value, err, err_len) != 0)
+            return -1;
+        return duel_plan_try_set(m->sets[m->n_sets - 1], err, err_len);
+    }
+    return 0;
+}
+
+/* Directory part of path ("." when none). */
+static void duel_plan_dirname(const char *path, char *out, size_t cap)
+{
+    const char *slash = strrchr(path, '/');
+    if (slash == NULL)
+        snprintf(out, cap, ".");
+    else if (slash == path)
+        snprintf(out, cap, "/");
+    else
+        snprintf(out, cap, "%.*s", (int)(slash - path), path);
+}
+
+static char *duel_plan_cfg_text(const duel_config *cfg)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&text, &len);
+    if (mem == NULL)
+        return NULL;
+    fputs(DUEL_PLAN_CFG_HEADER, mem);
+    duel_config_dump(mem, cfg);
+    if (fclose(mem) != 0) {
+        free(text);
+        return NULL;
+    }
+    return text;
+}
+
+/* Every method's configuration: its preset (or, from_dir, DIR/configs/NAME.ini), [all runs], its keys. */
+static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *err, size_t err_len)
+{
+    uint32_t i, k;
+    char path[8400], msg[1200];
+    for (i = 0; i < p->n_methods; i++) {
+        duel_plan_method *m = &p->m[i];
+        duel_config_default(&m->cfg);
+        if (from_dir)
+            snprintf(path, sizeof path, "%s/configs/%s.ini", base, m->name);
+        else
+            snprintf(path, sizeof path, "%s/%s.ini", base, m->preset);
+        if (duel_config_read(&m->cfg, path, msg, sizeof msg) != 0) {
+            snprintf(err, err_len, "[method %s]: %s", m->name, msg);
+            return -1;
+        }
+        for (k = 0; !from_dir && k < p->n_sets + m->n_sets; k++) {
+            const char *set = k < p->n_sets ? p->sets[k] : m->sets[k - p->n_sets];
+            if (duel_config_set(&m->cfg, set, msg, sizeof msg) != 0) {
+                snprintf(err, err_len, "[method %s]: %s", m->name, msg);
+                return -1;
+            }
+        }
+        if (!from_dir) {
+            m->cfg.seed = p->seed;
+            if (m->start_best) {
+                m->cfg.start.kind = DUEL_START_BLOB;
+                strcpy(m->cfg.start.path, DUEL_PLAN_BEST_BLOB);
+            }
+        }
+        if (duel_config_check(&m->cfg, msg, sizeof msg) != 0) {
+            snprintf(err, err_len, "[method %s] (%s): %s", m->name, path, msg);
+            return -1;
+        }
+        m->cfg_text = duel_plan_cfg_text(&m->cfg);
+        if (m->cfg_text == NULL) {
+            snprintf(err, err_len, "out of memory");
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* The plan at path (from_dir: an experiment directory's plan.ini, configurations from base/configs), the extra
+ * overrides after [all runs], every method's configuration built. */
+static int duel_plan_read(duel_plan **out, const char *path, int from_dir, const char *base,
+                          const char *const *extra, uint32_t n_extra, char *err, size_t err_len)
+{
+    duel_plan_reader r;
+    duel_plan *p = (duel_plan *)calloc(1, sizeof *p);
+    char msg[1200];
+    uint32_t i;
+    *out = p;
+    if (p == NULL) {
+        snprintf(err, err_len, "out of memory");
+        return -1;
+    }
+    p->seed = 1;
+    memset(&r, 0, sizeof r);
+    r.p = p;
+    r.from_dir = from_dir;
+    if (neat_ini_parse_file(path, duel_plan_handler, &r, err, err_len) != 0)
+        return -1;
+    for (i = 0; i < n_extra; i++) {
+        const char *eq = strchr(extra[i], '=');
+        char key[DUEL_PLAN_SET_LEN];
+        if (eq == NULL || eq == extra[i] || (size_t)(eq - extra[i]) >= sizeof key) {
+            snprintf(err, err_len, "--set '%s': expected key=value or section.key=value", extra[i]);
+            return -1;
+        }
+        snprintf(key, sizeof key, "%.*s", (int)(eq - extra[i]), extra[i]);
+        if (duel_plan_add_set(p->sets, &p->n_sets, key, eq + 1, msg, sizeof msg) != 0 ||
+            duel_plan_try_set(p->sets[p->n_sets - 1], msg, sizeof msg) != 0) {
+            snprintf(err, err_len, "--set %s: %s", extra[i], msg);
+            return -1;
+        }
+    }
+    if (p->n_methods == 0) {
+        snprintf(err, err_len, "%s: no [method NAME] section: a plan needs at least one method", path);
+        return -1;
+    }
+    for (i = 0; i < p->n_methods; i++)
+        if (!r.have_runs[i] || !r.have_preset[i]) {
+            snprintf(err, err_len, "%s: [method %s] needs %s", path, p->m[i].name,
+                     r.have_preset[i] ? "runs = N" : "preset = NAME");
+            return -1;
+        }
+    if (p->reference[0] == '\0')
+        strcpy(p->reference, p->m[0].name);
+    for (p->ref = 0; p->ref < p->n_methods && strcmp(p->m[p->ref].name, p->reference) != 0; p->ref++)
+        ;
+    if (p->ref == p->n_methods) {
+        snprintf(err, err_len, "%s: reference = %s names no [method %s]", path, p->reference, p->reference);
+        return -1;
+    }
+    if (p->m[p->ref].start_best) {
+        snprintf(err, err_len, "%s: the reference method %s cannot start from its own best champion (start = best)",
+                 path, p->reference);
+        return -1;
+    }
+    if (p->m[p->ref].runs < 2) {
+        snprintf(err, err_len, "%s: the reference method %s needs at least 2 runs (each run is measured against the "
+                 "others' rankings)", path, p->reference);
+        return -1;
+    }
+    if (!from_dir) {
+        char dir[4200], presets[8400];
+        duel_plan_dirname(path, dir, sizeof dir);
+        if (p->presets[0] == '/')
+            snprintf(presets, sizeof presets, "%s", p->presets);
+        else
+            snprintf(presets, sizeof presets, "%s/%s", dir, p->presets[0] ? p->presets : ".");
+        return duel_plan_build(p, presets, 0, err, err_len);
+    }
+    return duel_plan_build(p, base, 1, err, err_len);
+}
+
+int duel_plan_load(duel_plan **out, const char *path, const char *const *extra, uint32_t n_extra, char *err,
+                   size_t err_len)
+{
+    return duel_plan_read(out, path, 0, NULL, extra, n_extra, err, err_len);
+}
+
+int duel_plan_load_dir(duel_plan **out, const char *dir, char *err, size_t err_len)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/plan.ini", dir);
+    return duel_plan_read(out, path, 1, dir, NULL, 0, err, err_len);
+}
+
+void duel_plan_free(duel_plan *p)
+{
+    uint32_t i;
+    if (p == NULL)
+        return;
+    for (i = 0; i < p->n_methods; i++)
+        free(p->m[i].cfg_text);
+    free(p);
+}
+
+char *duel_plan_text(const duel_plan *p)
+{
+    char *text = NULL;
+    size_t len = 0;
+    uint32_t i, k;
+    FILE *mem = open_memstream(&text, &len);
+    if (mem == NULL)
+        return NULL;
+    fprintf(mem, "%s[experiment]\nreference = %s\nseed = %u\n", DUEL_PLAN_HEADER, p->reference, p->seed);
+    if (p->n_sets > 0)
+        fprintf(mem, "\n[all runs]\n");
+    for (k = 0; k < p->n_sets; k++) {
+        const char *eq = strchr(p->sets[k], '=');
+        fprintf(mem, "%.*s = %s\n", (int)(eq - p->sets[k]), p->sets[k], eq + 1);
+    }
+    for (i = 0; i < p->n_methods; i++) {
+        const duel_plan_method *m = &p->m[i];
+        fprintf(mem, "\n[method %s]\npreset = %s\nruns = %u\n", m->name, m->preset, m->runs);
+        if (m->start_best)
+            fprintf(mem, "start = best\n");
+        for (k = 0; k < m->n_sets; k++) {
+            const char *eq = strchr(m->sets[k], '=');
+            fprintf(mem, "%.*s = %s\n", (int)(eq - m->sets[k]), m->sets[k], eq + 1);
+        }
+    }
+    if (fclose(mem) != 0) {
+        free(text);
+        return NULL;
+    }
+    return text;
+}
+
+int duel_plan_save(const duel_plan *p, const char *dir)
+{
+    char path[4200], *text = duel_plan_text(p);
+    uint32_t i;
+    snprintf(path, sizeof path, "%s/configs", dir);
+    if (text == NULL || duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", path, text == NULL ? "out of memory" : strerror(errno));
+        free(text);
+        return -1;
+    }
+    for (i = 0; i < p->n_methods; i++) {
+        snprintf(path, sizeof path, "%s/configs/%s.ini", dir, p->m[i].name);
+        if (duel_file_replace(path, p->m[i].cfg_text, strlen(p->m[i].cfg_text)) != 0) {
+            fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", path, strerror(errno));
+            free(text);
+            return -1;
+        }
+    }
+    snprintf(path, sizeof path, "%s/plan.ini", dir);
+    if (duel_file_replace(path, text, strlen(text)) != 0) {
+        fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", path, strerror(errno));
+        free(text);
+        return -1;
+    }
+    free(text);
+    return 0;
+}
+
+char *duel_plan_run_config(const duel_plan *p, uint32_t i, uint32_t k)
+{
+    duel_config c = p->m[i].cfg;
+    c.seed = p->seed + (k - 1);
+    return duel_plan_cfg_text(&c);
+}
+
+uint32_t duel_plan_diff(const char *a, const char *b, char *la, char *lb, size_t cap)
+{
+    uint32_t line = 1;
+    for (;;) {
+        size_t na = strcspn(a, "\n"), nb = strcspn(b, "\n");
+        if (na != nb || memcmp(a, b, na) != 0 || (a[na] == '\0') != (b[nb] == '\0')) {
+            snprintf(la, cap, "%.*s", (int)na, a);
+            snprintf(lb, cap, "%.*s", (int)nb, b);
+            return line;
+        }
+        if (a[na] == '\0')
+            return 0;
+        a += na + 1;
+        b += nb + 1;
+        line++;
+    }
+}
