@@ -13,7 +13,7 @@ static void duel_usage(FILE *f)
                "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
                "       duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
-               "       duel_evolve ladder DIR\n"
+               "       duel_evolve ladder DIR [--top]\n"
                "       duel_evolve compare RUN... --against RUN... [--threads T] [--json FILE] [--csv FILE] "
                "[--cache FILE]\n"
                "       duel_evolve experiment PLAN --out DIR [--set key=value ...] [--jobs J] [--threads T] [--quiet]\n"

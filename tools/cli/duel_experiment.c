@@ -36,13 +36,15 @@ int duel_cmd_experiment(int argc, char **argv)
     int i, mode, rc;
 
     if (argc < 1 || argv[0][0] == '-') {
-        fprintf(stderr, "%s\n", DUEL_EXP_USAGE);
-        return argc >= 1 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0) ? 0 : 2;
+        int help = argc >= 1 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0);
+        fprintf(help ? stdout : stderr, "%s\n", DUEL_EXP_USAGE);
+        return help ? 0 : 2;
     }
     /* mode 0: PLAN --out DIR; 1: resume DIR; 2: report DIR */
     mode = strcmp(argv[0], "resume") == 0 ? 1 : strcmp(argv[0], "report") == 0 ? 2 : 0;
     if (mode != 0 && (argc < 2 || argv[1][0] == '-')) {
-        fprintf(stderr, "duel_evolve: experiment %s: which experiment directory?\n%s\n", argv[0], DUEL_EXP_USAGE);
+        fprintf(stderr, "duel_evolve: experiment %s: which experiment directory? (duel_evolve experiment --help)\n",
+                argv[0]);
         return 2;
     }
     what = mode == 0 ? argv[0] : argv[1];
@@ -61,7 +63,7 @@ int duel_cmd_experiment(int argc, char **argv)
             continue;
         }
         if (!takes || (mode == 2) || (mode == 1 && (strcmp(a, "--out") == 0 || strcmp(a, "--set") == 0))) {
-            fprintf(stderr, "duel_evolve: experiment: unknown option '%s' here\n%s\n", a, DUEL_EXP_USAGE);
+            fprintf(stderr, "duel_evolve: experiment: unknown option '%s' here (duel_evolve experiment --help)\n", a);
             free(sets);
             return 2;
         }
@@ -81,7 +83,7 @@ int duel_cmd_experiment(int argc, char **argv)
         }
     }
     if (mode == 0 && out == NULL) {
-        fprintf(stderr, "duel_evolve: experiment: where? (--out DIR)\n%s\n", DUEL_EXP_USAGE);
+        fprintf(stderr, "duel_evolve: experiment: where? (--out DIR; duel_evolve experiment --help)\n");
         free(sets);
         return 2;
     }

@@ -10,13 +10,36 @@
 #include "duel_cmp_cache.h"
 #include "duel_config.h"
 #include "duel_ctrl.h"
+#include "duel_files.h"
 #include "duel_pairs.h"
 #include "duel_perf.h"
 #include "neat_coev.h"
 
 /* DIR is a run that has played every generation of its config.ini, and its
  * dominance.csv holds the levels its checkpoint does. */
-static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre)
+/* The generations generations.csv records in full (both populations' rows), 0 when it cannot be read. */
+static uint32_t duel_perf_csv_generations(const char *dir)
+{
+    char path[4200];
+    uint8_t *data;
+    size_t len, i, start = 0;
+    uint32_t done = 0;
+    snprintf(path, sizeof path, "%s/generations.csv", dir);
+    if (duel_file_read(path, 256u << 20, &data, &len) != 0)
+        return 0;
+    for (i = 0; i < len; i++)
+        if (data[i] == '\n') {
+            /* a row of population B ends its generation */
+            const uint8_t *comma = (const uint8_t *)memchr(data + start, ',', i - start);
+            if (comma != NULL && comma + 2 < data + i && comma[1] == 'B' && comma[2] == ',')
+                done = (uint32_t)strtoul((const char *)data + start, NULL, 10) + 1;
+            start = i + 1;
+        }
+    free(data);
+    return done;
+}
+
+static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre, int ckpt)
 {
     char path[4200], err[4400];
     duel_config cfg;
@@ -42,16 +65,21 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre)
         fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
         return -1;
     }
-    snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
-    e = duel_ckpt_load(pre, path, &c);
-    if (e > 0)
-        fprintf(stderr, "duel_evolve: %s%s: missing: not a run directory, or one that never finished a "
-                        "generation\n", pre, path);
-    if (e != 0)
-        return -1;
-    gen = neat_coev_generation(c);
-    doms = neat_coev_dominant_count(c);
-    neat_coev_free(c);
+    if (ckpt) {
+        snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
+        e = duel_ckpt_load(pre, path, &c);
+        if (e > 0)
+            fprintf(stderr, "duel_evolve: %s%s: missing: not a run directory, or one that never finished a "
+                            "generation\n", pre, path);
+        if (e != 0)
+            return -1;
+        gen = neat_coev_generation(c);
+        doms = neat_coev_dominant_count(c);
+        neat_coev_free(c);
+    } else {
+        gen = duel_perf_csv_generations(dir);
+        doms = UINT32_MAX;
+    }
     if (gen < cfg.generations) {
         fprintf(stderr, "duel_evolve: %s%s: not a finished run (%u of %u generations): resume it first\n", pre, dir,
                 gen, cfg.generations);
@@ -59,7 +87,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre)
     }
     if (duel_levels_read(dir, &r->levels, &r->n_levels) != 0)
         return -1;
-    if (r->n_levels != doms) {
+    if (doms != UINT32_MAX && r->n_levels != doms) {
         fprintf(stderr, "duel_evolve: %s%s/dominance.csv: %u levels, but the checkpoint has %u: resume the run "
                         "to repair it\n", pre, dir, r->n_levels, doms);
         return -1;
@@ -83,9 +111,9 @@ static void duel_perf_close(duel_perf_run *r)
 }
 
 /* duel_perf_open_in, leaving nothing allocated when it fails */
-static int duel_perf_open(duel_perf_run *r, const char *dir, const char *pre)
+static int duel_perf_open(duel_perf_run *r, const char *dir, const char *pre, int ckpt)
 {
-    if (duel_perf_open_in(r, dir, pre) == 0)
+    if (duel_perf_open_in(r, dir, pre, ckpt) == 0)
         return 0;
     duel_perf_close(r);
     return -1;
@@ -133,7 +161,7 @@ static void duel_perf_progress(void *ud, size_t done, size_t n)
 
 /* Every candidate opened, then the rankings not among them; the pairs. 0 or 2/1 after one line. */
 static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
-                              uint32_t n_against, const char *pre)
+                              uint32_t n_against, const char *pre, int ckpt)
 {
     uint32_t i, j, k;
     int rc = 2;
@@ -152,7 +180,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
     if (m->runs == NULL || m->rank == NULL)
         DUEL_PERF_OOM(m);
     for (i = 0; i < n_cand; i++) {
-        if (duel_perf_open(&m->runs[m->n_runs], cand[i], pre) != 0)
+        if (duel_perf_open(&m->runs[m->n_runs], cand[i], pre, ckpt) != 0)
             goto out;
         m->n_runs++;
         for (j = 0; j < i; j++)
@@ -163,7 +191,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
     }
     for (i = 0; i < n_against; i++) {
         duel_perf_run r;
-        if (duel_perf_open(&r, against[i], pre) != 0)
+        if (duel_perf_open(&r, against[i], pre, ckpt) != 0)
             goto out;
         for (j = 0; j < m->n_runs && strcmp(m->runs[j].real, r.real) != 0; j++)
             ;
@@ -230,7 +258,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
 
     memset(m, 0, sizeof *m);
     memset(&shared, 0, sizeof shared);
-    rc = duel_perf_open_all(m, cand, n_cand, against, n_against, pre);
+    rc = duel_perf_open_all(m, cand, n_cand, against, n_against, pre, !o->no_checkpoint);
     if (rc != 0)
         goto out;
     rc = 2;

@@ -434,7 +434,7 @@ static int duel_exp_choose_best(const duel_plan *p, uint32_t threads)
     duel_perf perf;
     duel_perf_opts o;
     uint32_t k, best = 0;
-    int rc;
+    int rc, chosen_now;
     if (dirs == NULL || names == NULL) {
         free(dirs);
         free(names);
@@ -467,6 +467,7 @@ static int duel_exp_choose_best(const duel_plan *p, uint32_t threads)
                  "connections = %u\nperformance_highest = %.6f\nperformance_contiguous = %.6f\n",
                  m->name, m->name, names[best] + 5, path, perf.runs[best].n_levels, top->generation, top->hidden,
                  top->conns, perf.perf_hi[best], perf.perf_co[best]);
+        chosen_now = 0;
         if (duel_file_read(DUEL_PLAN_BEST_BLOB, DUEL_CKPT_MAX, &have, &len) == 0) {
             int same = len == top->ctrl.blob_len && memcmp(have, top->ctrl.blob, len) == 0;
             free(have);
@@ -478,12 +479,14 @@ static int duel_exp_choose_best(const duel_plan *p, uint32_t threads)
         } else if (duel_file_replace(DUEL_PLAN_BEST_BLOB, top->ctrl.blob, top->ctrl.blob_len) != 0) {
             fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", DUEL_PLAN_BEST_BLOB, strerror(errno));
             rc = 1;
+        } else {
+            chosen_now = 1;
         }
         if (rc == 0 && duel_file_replace("best-topology.txt", text, strlen(text)) != 0) {
             fprintf(stderr, "duel_evolve: experiment: best-topology.txt: cannot write: %s\n", strerror(errno));
             rc = 1;
         }
-        if (rc == 0)
+        if (rc == 0 && chosen_now)
             fprintf(stderr, "experiment: the best %s champion: %s (level %u, %u hidden, %u connections, performance "
                             "%.1f %%)\n", m->name, path, perf.runs[best].n_levels, top->hidden, top->conns,
                     100.0 * perf.perf_hi[best]);
@@ -640,7 +643,7 @@ static int duel_exp_compare_all(const duel_plan *p, uint32_t threads)
     return duel_exp_stop ? 130 : 0;
 }
 
-/* `duel_evolve ladder RUN` for each run without its ladder.csv, jobs at a time. */
+/* `duel_evolve ladder RUN --top` for each run without its ladder.csv, jobs at a time. */
 static int duel_exp_ladders(const duel_exp_sched *s, const char *self, uint32_t jobs)
 {
     uint32_t k = 0, running = 0;
@@ -657,14 +660,15 @@ static int duel_exp_ladders(const duel_exp_sched *s, const char *self, uint32_t 
         for (; k < s->n_runs && running < jobs && !duel_exp_stop && !failed; k++) {
             char path[400];
             struct stat st;
-            char *argv[4];
+            char *argv[5];
             snprintf(path, sizeof path, "%s/ladder.csv", s->runs[k].dir);
             if (stat(path, &st) == 0)
                 continue;
             argv[0] = (char *)"duel_evolve";
             argv[1] = (char *)"ladder";
             argv[2] = (char *)s->runs[k].dir;
-            argv[3] = NULL;
+            argv[3] = (char *)"--top";
+            argv[4] = NULL;
             pids[k] = duel_exp_spawn(self, argv, 1);
             if (pids[k] < 0) {
                 pids[k] = 0;

@@ -206,6 +206,7 @@ static int rep_measure(rep *R)
             cand[k] = R->runs[m->first + k].dir;
         memset(&o, 0, sizeof o);
         o.mode = DUEL_PERF_CACHE_ONLY;
+        o.no_checkpoint = 1; /* the report needs the rankings and the caches, not the populations */
         o.prefix = "experiment: report: ";
         rc = duel_perf_measure(&m->perf, cand, m->n, against, ref->runs, &o);
         free(cand);
@@ -329,7 +330,7 @@ static void rep_write_runs_csv(FILE *f, const void *ctx)
     fprintf(f, ",ladder_wins,ladder_losses\n");
     for (k = 0; k < R->n_runs; k++) {
         const rep_run *r = &R->runs[k];
-        fprintf(f, "%s,%s,%u,%u,%u,%u,%u,%u,%.6f,%.3f,%.6f,%.3f", R->p->m[r->method].name, r->dir + 5, r->seed,
+        fprintf(f, "%s,%s,%u,%u,%u,%u,%u,%u,%.6f,%.6f,%.6f,%.6f", R->p->m[r->method].name, r->dir + 5, r->seed,
                 r->generations, r->rows[r->n_levels - 1].hidden, r->rows[r->n_levels - 1].conns, r->n_levels,
                 r->rows[r->n_levels - 1].generation, r->col[COL_PERF_HI], r->col[COL_GEN_HI], r->col[COL_PERF_CO],
                 r->col[COL_GEN_CO]);

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "duel_files.h"
 #include "duel_plan.h"
@@ -231,7 +232,7 @@ static int duel_plan_read(duel_plan **out, const char *path, int from_dir, const
     duel_plan_reader r;
     duel_plan *p = (duel_plan *)calloc(1, sizeof *p);
     char msg[1200];
-    uint32_t i;
+    uint32_t i, k;
     *out = p;
     if (p == NULL) {
         snprintf(err, err_len, "out of memory");
@@ -251,8 +252,21 @@ static int duel_plan_read(duel_plan **out, const char *path, int from_dir, const
             return -1;
         }
         snprintf(key, sizeof key, "%.*s", (int)(eq - extra[i]), extra[i]);
-        if (duel_plan_add_set(p->sets, &p->n_sets, key, eq + 1, msg, sizeof msg) != 0 ||
-            duel_plan_try_set(p->sets[p->n_sets - 1], msg, sizeof msg) != 0) {
+        if (duel_plan_try_set(extra[i], msg, sizeof msg) != 0) {
+            snprintf(err, err_len, "--set %s: %s", extra[i], msg);
+            return -1;
+        }
+        /* a key [all runs] has already gets the new value in its place: plan.ini holds each key once */
+        for (k = 0; k < p->n_sets; k++)
+            if (strncmp(p->sets[k], key, strlen(key)) == 0 && p->sets[k][strlen(key)] == '=')
+                break;
+        if (k < p->n_sets) {
+            if (strlen(extra[i]) >= DUEL_PLAN_SET_LEN) {
+                snprintf(err, err_len, "--set %s: too long", key);
+                return -1;
+            }
+            snprintf(p->sets[k], DUEL_PLAN_SET_LEN, "%s", extra[i]);
+        } else if (duel_plan_add_set(p->sets, &p->n_sets, key, eq + 1, msg, sizeof msg) != 0) {
             snprintf(err, err_len, "--set %s: %s", extra[i], msg);
             return -1;
         }
@@ -306,7 +320,13 @@ int duel_plan_load(duel_plan **out, const char *path, const char *const *extra, 
 int duel_plan_load_dir(duel_plan **out, const char *dir, char *err, size_t err_len)
 {
     char path[4200];
+    struct stat st;
     snprintf(path, sizeof path, "%s/plan.ini", dir);
+    if (stat(path, &st) != 0 && errno == ENOENT) {
+        *out = NULL;
+        snprintf(err, err_len, "%s: not an experiment directory (no plan.ini)", dir);
+        return -1;
+    }
     return duel_plan_read(out, path, 1, dir, NULL, 0, err, err_len);
 }
 
