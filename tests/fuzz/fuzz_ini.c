@@ -1,4 +1,4 @@
-/* fuzz_ini.c - libFuzzer harness: any text as duel_evolve's run configuration (its first line also as a --set override) and as neat_bench's configuration; errors name the line, a loaded configuration dumps to text that loads back to the same dump. */
+/* fuzz_ini.c - libFuzzer harness: any text as duel_evolve's run configuration (its first line also as a --set override), as an experiment's plan, and as neat_bench's configuration; errors name the line, a loaded configuration dumps to text that loads back to the same dump. */
 #define _POSIX_C_SOURCE 200809L
 #include <stddef.h>
 #include <stdint.h>
@@ -8,6 +8,7 @@
 
 #include "bench.h"
 #include "duel_config.h"
+#include "duel_plan.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -54,6 +55,36 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         duel_config_default(&cfg);
         if (duel_config_set(&cfg, line, err, sizeof err) == 0)
             (void)duel_config_check(&cfg, err, sizeof err);
+    }
+    /* the text as an experiment's plan: a parsed plan is consistent, an error names the file */
+    {
+        duel_plan *plan = NULL;
+        if (duel_plan_parse_text(&plan, "p.ini", text, size, err, sizeof err) == 0) {
+            uint32_t i;
+            if (plan->n_methods == 0 || plan->n_methods > DUEL_PLAN_MAX_METHODS || plan->ref >= plan->n_methods ||
+                plan->m[plan->ref].runs < 2 || plan->m[plan->ref].start_best)
+                __builtin_trap();
+            for (i = 0; i < plan->n_methods; i++)
+                if (plan->m[i].runs < 1 || plan->m[i].runs > DUEL_PLAN_MAX_RUNS || plan->m[i].name[0] == '\0' ||
+                    plan->m[i].preset[0] == '\0' || plan->m[i].n_sets > DUEL_PLAN_MAX_SETS)
+                    __builtin_trap();
+            {
+                char *t = duel_plan_text(plan); /* the canonical text parses back to the same text */
+                duel_plan *back = NULL;
+                char *t2;
+                if (t == NULL || duel_plan_parse_text(&back, "back", t, strlen(t), err, sizeof err) != 0)
+                    __builtin_trap();
+                t2 = duel_plan_text(back);
+                if (t2 == NULL || strcmp(t, t2) != 0)
+                    __builtin_trap();
+                free(t);
+                free(t2);
+                duel_plan_free(back);
+            }
+        } else if (strncmp(err, "p.ini", 5) != 0 && strcmp(err, "out of memory") != 0) {
+            __builtin_trap();
+        }
+        duel_plan_free(plan);
     }
     memset(&bc, 0, sizeof bc);
     bc.neat = neat_params_default();

@@ -64,6 +64,13 @@ bad)
   mkplan ok2.ini
   expect_bad "not empty and not an experiment directory" experiment ok2.ini --out full
   [ ! -e e ] || fail "a refused plan created its directory"
+  # every plan of configs/plans is valid
+  for f in "$(dirname "$plan")"/../../configs/plans/*.ini; do
+    out=$("$duel" experiment "$f" --dry-run) || fail "$f: $out"
+    grep -q "runs, [0-9]* generations in all" <<< "$out" || fail "$f --dry-run: $out"
+  done
+  "$duel" experiment "$(dirname "$plan")/../../configs/plans/paper.ini" --dry-run |
+    grep -q "^38 runs, 19000 generations in all" || fail "the paper's plan is not 38 runs of 500 generations"
   echo "bad plans: ok"
   ;;
 

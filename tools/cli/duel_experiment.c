@@ -9,6 +9,7 @@
 
 #define DUEL_EXP_USAGE                                                                                                \
     "usage: duel_evolve experiment PLAN --out DIR [--set key=value ...] [--jobs J] [--threads T] [--quiet]\n"        \
+    "       duel_evolve experiment PLAN --dry-run [--set key=value ...]\n"                                            \
     "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"                                   \
     "       duel_evolve experiment report DIR"
 
@@ -33,7 +34,7 @@ int duel_cmd_experiment(int argc, char **argv)
     const char *what, *out = NULL, **sets;
     uint32_t n_sets = 0;
     char err[9000];
-    int i, mode, rc;
+    int i, mode, rc, dry = 0;
 
     if (argc < 1 || argv[0][0] == '-') {
         int help = argc >= 1 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0);
@@ -62,6 +63,10 @@ int duel_cmd_experiment(int argc, char **argv)
             o.quiet = 1;
             continue;
         }
+        if (strcmp(a, "--dry-run") == 0 && mode == 0) {
+            dry = 1;
+            continue;
+        }
         if (!takes || (mode == 2) || (mode == 1 && (strcmp(a, "--out") == 0 || strcmp(a, "--set") == 0))) {
             fprintf(stderr, "duel_evolve: experiment: unknown option '%s' here (duel_evolve experiment --help)\n", a);
             free(sets);
@@ -82,7 +87,7 @@ int duel_cmd_experiment(int argc, char **argv)
             return 2;
         }
     }
-    if (mode == 0 && out == NULL) {
+    if (mode == 0 && out == NULL && !dry) {
         fprintf(stderr, "duel_evolve: experiment: where? (--out DIR; duel_evolve experiment --help)\n");
         free(sets);
         return 2;
@@ -97,7 +102,10 @@ int duel_cmd_experiment(int argc, char **argv)
         duel_plan_free(plan);
         return 2;
     }
-    if (mode == 2)
+    if (dry) {
+        duel_plan_print(stdout, plan);
+        rc = 0;
+    } else if (mode == 2)
         rc = duel_exp_report(plan, what);
     else
         rc = duel_exp_run(plan, mode == 0 ? out : what, &o);

@@ -226,8 +226,10 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
 
 /* The plan at path (from_dir: an experiment directory's plan.ini, configurations from base/configs), the extra
  * overrides after [all runs], every method's configuration built. */
-static int duel_plan_read(duel_plan **out, const char *path, int from_dir, const char *base,
-                          const char *const *extra, uint32_t n_extra, char *err, size_t err_len)
+/* The plan's text (a file at path, or len bytes of text named path), parsed, the extra overrides added and the
+ * whole checked; no configuration is built. */
+static int duel_plan_parse(duel_plan **out, const char *path, const char *text, size_t text_len, int from_dir,
+                           const char *const *extra, uint32_t n_extra, char *err, size_t err_len)
 {
     duel_plan_reader r;
     duel_plan *p = (duel_plan *)calloc(1, sizeof *p);
@@ -242,7 +244,8 @@ static int duel_plan_read(duel_plan **out, const char *path, int from_dir, const
     memset(&r, 0, sizeof r);
     r.p = p;
     r.from_dir = from_dir;
-    if (neat_ini_parse_file(path, duel_plan_handler, &r, err, err_len) != 0)
+    if ((text != NULL ? neat_ini_parse_text(path, text, text_len, duel_plan_handler, &r, err, err_len)
+                      : neat_ini_parse_file(path, duel_plan_handler, &r, err, err_len)) != 0)
         return -1;
     for (i = 0; i < n_extra; i++) {
         const char *eq = strchr(extra[i], '=');
@@ -299,6 +302,21 @@ static int duel_plan_read(duel_plan **out, const char *path, int from_dir, const
                  "others' rankings)", path, p->reference);
         return -1;
     }
+    return 0;
+}
+
+int duel_plan_parse_text(duel_plan **out, const char *name, const char *text, size_t len, char *err, size_t err_len)
+{
+    return duel_plan_parse(out, name, text, len, 0, NULL, 0, err, err_len);
+}
+
+static int duel_plan_read(duel_plan **out, const char *path, int from_dir, const char *base,
+                          const char *const *extra, uint32_t n_extra, char *err, size_t err_len)
+{
+    duel_plan *p;
+    if (duel_plan_parse(out, path, NULL, 0, from_dir, extra, n_extra, err, err_len) != 0)
+        return -1;
+    p = *out;
     if (!from_dir) {
         char dir[4200], presets[8400];
         duel_plan_dirname(path, dir, sizeof dir);
@@ -423,4 +441,23 @@ uint32_t duel_plan_diff(const char *a, const char *b, char *la, char *lb, size_t
         b += nb + 1;
         line++;
     }
+}
+
+void duel_plan_print(FILE *f, const duel_plan *p)
+{
+    uint32_t i, runs = 0;
+    uint64_t gens = 0;
+    for (i = 0; i < p->n_methods; i++) {
+        const duel_plan_method *m = &p->m[i];
+        char st[DUEL_START_MAX_PATH + 16];
+        duel_start_text(&m->cfg.start, st, sizeof st);
+        fprintf(f, "%-20s %-16s %4u run%s of 2 x %u networks, %u generations, start %s%s%s\n", m->name, m->preset,
+                m->runs, m->runs == 1 ? " " : "s", m->cfg.neat.pop_size, m->cfg.generations,
+                m->start_best ? "= the best champion of " : st, m->start_best ? p->reference : "",
+                m->cfg.coev.random_fitness ? ", random fitness" : "");
+        runs += m->runs;
+        gens += (uint64_t)m->runs * m->cfg.generations;
+    }
+    fprintf(f, "%u runs, %llu generations in all; every method against the %s rankings (seeds %u, %u, ...)\n", runs,
+            (unsigned long long)gens, p->reference, p->seed, p->seed + 1);
 }

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "duel_config.h"
 
@@ -41,9 +42,15 @@ typedef struct duel_plan {
  * malloc'd *out. 0, or -1 with one line in err naming the file and line (or the preset and its line). */
 int duel_plan_load(duel_plan **out, const char *path, const char *const *extra, uint32_t n_extra, char *err,
                    size_t err_len);
+/* len bytes of a plan's text (named name in messages) parsed and checked, no preset read and no configuration
+ * built (m[].cfg_text NULL). 0, or -1 with "NAME:LINE: problem" or "NAME: problem" in err; *out to free either way. */
+int duel_plan_parse_text(duel_plan **out, const char *name, const char *text, size_t len, char *err, size_t err_len);
 /* An experiment directory's plan.ini and configs/NAME.ini, as duel_plan_save wrote them. Same return. */
 int duel_plan_load_dir(duel_plan **out, const char *dir, char *err, size_t err_len);
 void duel_plan_free(duel_plan *p);
+
+/* What the plan runs, a line per method (name, preset, runs, population, generations, start), and the total. */
+void duel_plan_print(FILE *f, const duel_plan *p);
 
 /* The plan's canonical text (what plan.ini holds), malloc'd, NULL when out of memory. */
 char *duel_plan_text(const duel_plan *p);
