@@ -70,7 +70,8 @@ static int duel_exp_check_runs(const duel_plan *p, const char *dir)
                 e->d_name[n + 1] > '9')
                 continue;
             v = strtoul(e->d_name + n + 1, &end, 10);
-            if (*end == '\0' && v >= 1 && v <= p->m[i].runs) {
+            snprintf(name, sizeof name, "%s-%lu", p->m[i].name, v);
+            if (*end == '\0' && v >= 1 && v <= p->m[i].runs && strcmp(name, e->d_name) == 0) {
                 k = (uint32_t)v;
                 break;
             }
@@ -224,6 +225,7 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
     rc = duel_exp_check_runs(p, dir);
     if (rc != 0)
         return rc;
+    /* written again each time (the same bytes): a deleted configs/NAME.ini comes back for the runs to read */
     if (create && duel_plan_save(p, ".") != 0)
         return 1;
     return 0;
@@ -240,6 +242,7 @@ typedef struct duel_exp_run_state {
     pid_t pid;                 /* running: its child */
     uint32_t gen_done;         /* from generations.csv, for the progress line */
     double seconds;            /* the seconds of the generations recorded */
+    double games;              /* the games they played */
 } duel_exp_run_state;
 
 /* generations.csv of a run: the last generation recorded and the seconds of them all (population A's rows). */
@@ -249,7 +252,7 @@ static void duel_exp_progress_of(duel_exp_run_state *r)
     uint8_t *data;
     size_t len, i, start = 0;
     uint32_t last = 0;
-    double secs = 0.0;
+    double secs = 0.0, games = 0.0;
     snprintf(path, sizeof path, "%s/generations.csv", r->dir);
     if (duel_file_read(path, 64u << 20, &data, &len) != 0)
         return;
@@ -263,9 +266,16 @@ static void duel_exp_progress_of(duel_exp_run_state *r)
             row[n] = '\0';
             comma = strchr(row, ',');
             if (comma != NULL && comma[1] == 'A') {
+                char *f = row;
+                int col;
                 last = (uint32_t)strtoul(row, NULL, 10) + 1;
                 comma = strrchr(row, ',');
                 secs += strtod(comma + 1, NULL);
+                for (col = 0; col < 14 && f != NULL; col++) /* games: the 15th column */
+                    if ((f = strchr(f, ',')) != NULL)
+                        f++;
+                if (f != NULL)
+                    games += strtod(f, NULL);
             }
         }
         start = i + 1;
@@ -273,6 +283,23 @@ static void duel_exp_progress_of(duel_exp_run_state *r)
     free(data);
     r->gen_done = last;
     r->seconds = secs;
+    r->games = games;
+}
+
+/* The dominance levels of a run so far (the rows of its dominance.csv). */
+static uint32_t duel_exp_levels(const duel_exp_run_state *r)
+{
+    char path[400];
+    uint8_t *data;
+    size_t len, i;
+    uint32_t n = 0;
+    snprintf(path, sizeof path, "%s/dominance.csv", r->dir);
+    if (duel_file_read(path, 64u << 20, &data, &len) != 0)
+        return 0;
+    for (i = 0; i < len; i++)
+        n += data[i] == '\n';
+    free(data);
+    return n > 0 ? n - 1 : 0;
 }
 
 static int duel_exp_state(duel_exp_run_state *r)
@@ -405,6 +432,28 @@ static void duel_exp_show(duel_exp_sched *s, uint32_t jobs, int final)
         if (r->state != DUEL_RUN_DONE)
             left += duel_exp_rate(s, r->method) * (double)(r->generations - (r->gen_done < r->generations ? r->gen_done : r->generations));
     }
+    {
+        /* then the comparisons and ladders, 288 games each, at the games per second the runs played: every
+         * run's top dominant against each level of each reference ranking (as many levels as the finished
+         * reference runs have, 10 before there is one) and against the built-in strategies */
+        double secs = 0.0, games = 0.0, levels = 0.0, cmp;
+        uint32_t n_ref = 0, done_ref = 0;
+        for (k = 0; k < s->n_runs; k++) {
+            secs += s->runs[k].seconds;
+            games += s->runs[k].games;
+            if (s->runs[k].method == s->p->ref) {
+                n_ref++;
+                if (s->runs[k].state == DUEL_RUN_DONE) {
+                    levels += duel_exp_levels(&s->runs[k]);
+                    done_ref++;
+                }
+            }
+        }
+        levels = done_ref ? levels / done_ref : 10.0;
+        cmp = ((double)s->n_runs * n_ref * levels + (double)s->n_runs * DUEL_N_BUILTINS) * 2.0 * DUEL_CONFIGS;
+        if (games > 0.0)
+            left += cmp * secs / games;
+    }
     if (left > 0.0)
         duel_exp_hms(eta, sizeof eta, left / (jobs ? jobs : 1));
     else
@@ -414,7 +463,7 @@ static void duel_exp_show(duel_exp_sched *s, uint32_t jobs, int final)
         if (s->runs[k].pid > 0)
             n += (size_t)snprintf(line + n, sizeof line - n, "%s %s %u/%u", running++ ? "," : ";",
                                   s->runs[k].dir + 5, s->runs[k].gen_done, s->runs[k].generations);
-    snprintf(line + n, sizeof line - n, "; runs left about %s", eta);
+    snprintf(line + n, sizeof line - n, "; about %s to the end", eta);
     if (s->tty)
         fprintf(stderr, "\r%s\033[K", line);
     else
@@ -523,9 +572,8 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
         int status;
         pid_t pid;
         if (!best_ready && ref_left == 0) {
+            /* at once, beside the runs still going (they share the cores; nothing depends on who is first) */
             int rc;
-            if (running > 0)
-                goto wait; /* the comparisons take every core: after the runs now going */
             if (s->tty && !s->quiet)
                 fprintf(stderr, "\r\033[K");
             rc = duel_exp_choose_best(p, cmp_threads);
@@ -549,7 +597,6 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
         }
         if (running == 0)
             break;
-    wait:
         if (duel_exp_stop && !forwarded) {
             /* a signal to this process alone (kill -INT): the runs finish their generation and save it */
             for (k = 0; k < s->n_runs; k++)
@@ -761,6 +808,7 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
                 p->n_methods, s.n_runs, s.done, jobs, threads, threads == 1 ? "" : "s");
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = duel_exp_on_signal;
+    sa.sa_flags = (int)SA_RESETHAND; /* a second Ctrl-C stops at once (the runs keep their last generation) */
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     rc = duel_exp_play_runs(&s, self, jobs, threads, o->threads ? o->threads : 0);
