@@ -48,7 +48,7 @@ def fig7(d, table):
         g = [int(r["generation"]) for r in data]
         v = [float(r[key]) for r in data]
         ax.plot(g, v, color=REF_COLOR, lw=1.5, marker="|", markersize=9,
-                label="current dominant, mean of %s runs (| : a new level in some run)" % ref)
+                label="current dominant, mean over the %s runs (|: a new level in one of them)" % ref)
         if rand:
             rg = [int(r["generation"]) for r in rand]
             ax.plot(rg, [float(r[rmin]) for r in rand], color="gray", ls="--", lw=1,
@@ -61,7 +61,8 @@ def fig7(d, table):
         ax.set_xlabel("generation")
         ax.set_ylabel("%s (count)" % label)
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=8, loc="upper left")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=8, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=3)
     fig.suptitle("Figure 7: complexification of the dominant networks")
     save(fig, d, "fig7-complexity")
 
@@ -78,6 +79,7 @@ def fig11(d, table):
         games = data[0]["games"]
         ax.set_ylabel("extra games won of %s (wins - losses)" % games)
         ax.legend(fontsize=8, loc="upper left")
+    ax.xaxis.get_major_locator().set_params(integer=True)
     ax.set_xlabel("difference in dominance level")
     ax.set_title("Figure 11: what a difference in dominance level means")
     ax.grid(alpha=0.3)
