@@ -1,4 +1,4 @@
-/* fuzz_rundir.c - libFuzzer harness: any bytes as a run directory's dominance.csv (the ladder and compare read it), as its compare-cache.csv, and as a generations.csv cut back on resume, which must stay a prefix that ends at a row. */
+/* fuzz_rundir.c - libFuzzer harness: any bytes as a run directory's dominance.csv (the ladder and compare read it), as its generations.csv (the experiment reads it), as its compare-cache.csv, and as a generations.csv cut back on resume, which must stay a prefix that ends at a row. */
 #define _POSIX_C_SOURCE 200809L
 #include <stddef.h>
 #include <stdint.h>
@@ -9,6 +9,7 @@
 
 #include "duel_cmp_cache.h"
 #include "duel_dominance.h"
+#include "duel_generations.h"
 #include "duel_files.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
@@ -50,6 +51,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         free(scores);
     } else if (strncmp(err, "d.csv", 5) != 0 || rows != NULL || n != 0 || scores != NULL) {
         __builtin_trap();
+    }
+    {
+        duel_gen_row *g;
+        size_t ng, k2;
+        if (duel_generations_parse("g.csv", (const char *)data, size, &g, &ng, err, sizeof err) == 0) {
+            uint32_t done = duel_generations_done(g, ng);
+            for (k2 = 0; k2 < ng; k2++)
+                if ((g[k2].pop != 'A' && g[k2].pop != 'B') || (g[k2].pop == 'B' && g[k2].generation >= done))
+                    __builtin_trap();
+            free(g);
+        } else if (strncmp(err, "g.csv", 5) != 0 || g != NULL || ng != 0) {
+            __builtin_trap();
+        }
     }
     {
         duel_cmp_cache c;

@@ -1,4 +1,4 @@
-/* test_dominance.c - dominance.csv rows of any length written and read back, and malformed files refused with their line. */
+/* test_dominance.c - dominance.csv rows of any length written and read back with their scores, generations.csv read back, and malformed files refused with their line. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include "duel_dominance.h"
+#include "duel_generations.h"
 
 /* A dominance.csv of n levels, level k beating the k - 1 below it. */
 static char *td_file(uint32_t n, size_t *len)
@@ -102,11 +103,64 @@ static void test_refused(void **state)
     td_bad(DUEL_DOMINANCE_HEADER "0,0,A,0,39,\n", "d.csv:2: level 0");
 }
 
+/* The scores: level k's k - 1 results, against level k - 1 first. */
+static void test_scores(void **state)
+{
+    const char *text = DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n2,3,B,0,40,150:100\n3,9,A,1,44,200:50 170:90\n";
+    duel_dominance_row *rows;
+    duel_dominance_score *sc;
+    uint32_t n;
+    char err[200];
+    (void)state;
+    assert_int_equal(duel_dominance_parse_scores("d.csv", text, strlen(text), &rows, &n, &sc, err, sizeof err), 0);
+    assert_int_equal(n, 3);
+    assert_int_equal(rows[1].scores, 0);
+    assert_int_equal(rows[2].scores, 1);
+    assert_int_equal(sc[0].wins, 150);
+    assert_int_equal(sc[0].losses, 100);
+    assert_int_equal(sc[1].wins, 200); /* level 3 against level 2 */
+    assert_int_equal(sc[2].losses, 90); /* level 3 against level 1 */
+    free(rows);
+    free(sc);
+}
+
+static void test_generations(void **state)
+{
+    const char *text = DUEL_GENERATIONS_HEADER "0,A,2,0.7812,1,3.0000,0.0000,39.0000,0,39,0,0,39,39,1536,1,1.149\n"
+                                               "0,B,6,0.2188,1,3.0000,0.0000,39.0000,0,39,0,2,39,45,1536,0,1.149\n"
+                                               "1,A,3,0.5,1,3.0,0.0,39.0,0,39,0,1,39,41,1536,0,0.5\n"
+                                               "1,B,3,0.5,1,3.0,0.0,39.0,0,39,0,1,39,4"; /* torn */
+    duel_gen_row *rows;
+    size_t n;
+    char err[200];
+    (void)state;
+    assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), 0);
+    assert_int_equal((int)n, 3);
+    assert_int_equal(rows[1].pop, 'B');
+    assert_int_equal(rows[1].max_hidden, 2);
+    assert_int_equal(rows[1].max_conns, 45);
+    assert_float_equal(rows[2].seconds, 0.5, 1e-12);
+    assert_float_equal(rows[0].games, 1536.0, 0.0);
+    assert_int_equal(duel_generations_done(rows, n), 1); /* generation 1 has no B row yet */
+    free(rows);
+    assert_int_equal(duel_generations_parse("g.csv", "gen\n", 4, &rows, &n, err, sizeof err), -1);
+    assert_string_equal(err, "g.csv:1: not a generations.csv (expected its header)");
+    text = DUEL_GENERATIONS_HEADER "0,C,2,0.7,1,3.0,0.0,39.0,0,39,0,0,39,39,1536,1,1.1\n";
+    assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), -1);
+    assert_string_equal(err, "g.csv:2: not a row of 17 fields with population A or B");
+    text = DUEL_GENERATIONS_HEADER "0,A,2,0.7,1,3.0,0.0,39.0,0,39,0,x,39,39,1536,1,1.1\n";
+    assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), -1);
+    assert_string_equal(err, "g.csv:2: field 12 is not a number");
+    assert_null(rows);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_long_rows),
         cmocka_unit_test(test_refused),
+        cmocka_unit_test(test_scores),
+        cmocka_unit_test(test_generations),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

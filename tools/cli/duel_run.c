@@ -17,6 +17,7 @@
 #include "duel_ctrl.h"
 #include "duel_dominance.h"
 #include "duel_files.h"
+#include "duel_generations.h"
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
 #include "neat_coev.h"
@@ -172,9 +173,7 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
     duel_path(path, sizeof path, R->dir, "generations.csv");
     /* missing, or left empty by a header write that failed: the header first */
     if ((stat(path, &st) != 0 || st.st_size == 0) &&
-        duel_file_append(path, "generation,population,best_fitness,mean_fitness,species,delta_t,mean_hidden,"
-                               "mean_connections,best_hidden,best_connections,min_hidden,max_hidden,"
-                               "min_connections,max_connections,games,champion,seconds\n") != 0)
+        duel_file_append(path, DUEL_GENERATIONS_HEADER) != 0)
         goto fail;
     for (p = 0; p < 2; p++) {
         const neat_coev_pop_report *pr = &rep->pop[p];

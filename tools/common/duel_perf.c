@@ -11,6 +11,7 @@
 #include "duel_config.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
+#include "duel_generations.h"
 #include "duel_pairs.h"
 #include "duel_perf.h"
 #include "neat_coev.h"
@@ -20,22 +21,14 @@
 /* The generations generations.csv records in full (both populations' rows), 0 when it cannot be read. */
 static uint32_t duel_perf_csv_generations(const char *dir)
 {
-    char path[4200];
-    uint8_t *data;
-    size_t len, i, start = 0;
-    uint32_t done = 0;
-    snprintf(path, sizeof path, "%s/generations.csv", dir);
-    if (duel_file_read(path, 256u << 20, &data, &len) != 0)
+    duel_gen_row *rows;
+    size_t n;
+    char err[4400];
+    uint32_t done;
+    if (duel_generations_read(dir, &rows, &n, err, sizeof err) != 0)
         return 0;
-    for (i = 0; i < len; i++)
-        if (data[i] == '\n') {
-            /* a row of population B ends its generation */
-            const uint8_t *comma = (const uint8_t *)memchr(data + start, ',', i - start);
-            if (comma != NULL && comma + 2 < data + i && comma[1] == 'B' && comma[2] == ',')
-                done = (uint32_t)strtoul((const char *)data + start, NULL, 10) + 1;
-            start = i + 1;
-        }
-    free(data);
+    done = duel_generations_done(rows, n);
+    free(rows);
     return done;
 }
 

@@ -19,6 +19,7 @@
 #include "duel_ctrl.h"
 #include "duel_exp.h"
 #include "duel_files.h"
+#include "duel_generations.h"
 #include "duel_perf.h"
 #include "neat_coev.h"
 
@@ -245,45 +246,24 @@ typedef struct duel_exp_run_state {
     double games;              /* the games they played */
 } duel_exp_run_state;
 
-/* generations.csv of a run: the last generation recorded and the seconds of them all (population A's rows). */
+/* generations.csv of a run: the generations recorded, their seconds and games (population A's rows hold them). */
 static void duel_exp_progress_of(duel_exp_run_state *r)
 {
-    char path[400];
-    uint8_t *data;
-    size_t len, i, start = 0;
-    uint32_t last = 0;
+    duel_gen_row *rows;
+    size_t n, k;
+    char err[600];
     double secs = 0.0, games = 0.0;
-    snprintf(path, sizeof path, "%s/generations.csv", r->dir);
-    if (duel_file_read(path, 64u << 20, &data, &len) != 0)
-        return;
-    for (i = 0; i < len; i++) {
-        if (data[i] != '\n')
-            continue;
-        if (start > 0 && i - start > 4) {
-            char row[512], *comma;
-            size_t n = i - start < sizeof row - 1 ? i - start : sizeof row - 1;
-            memcpy(row, data + start, n);
-            row[n] = '\0';
-            comma = strchr(row, ',');
-            if (comma != NULL && comma[1] == 'A') {
-                char *f = row;
-                int col;
-                last = (uint32_t)strtoul(row, NULL, 10) + 1;
-                comma = strrchr(row, ',');
-                secs += strtod(comma + 1, NULL);
-                for (col = 0; col < 14 && f != NULL; col++) /* games: the 15th column */
-                    if ((f = strchr(f, ',')) != NULL)
-                        f++;
-                if (f != NULL)
-                    games += strtod(f, NULL);
-            }
+    if (duel_generations_read(r->dir, &rows, &n, err, sizeof err) != 0)
+        return; /* not yet there, or being written: the next look */
+    for (k = 0; k < n; k++)
+        if (rows[k].pop == 'A') {
+            secs += rows[k].seconds;
+            games += rows[k].games;
         }
-        start = i + 1;
-    }
-    free(data);
-    r->gen_done = last;
+    r->gen_done = duel_generations_done(rows, n);
     r->seconds = secs;
     r->games = games;
+    free(rows);
 }
 
 /* The dominance levels of a run so far (the rows of its dominance.csv). */
@@ -571,7 +551,7 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
     for (;;) {
         int status;
         pid_t pid;
-        if (!best_ready && ref_left == 0) {
+        if (!best_ready && ref_left == 0 && !duel_exp_stop && !failed) {
             /* at once, beside the runs still going (they share the cores; nothing depends on who is first) */
             int rc;
             if (s->tty && !s->quiet)

@@ -12,6 +12,7 @@
 #include "duel_dominance.h"
 #include "duel_exp.h"
 #include "duel_files.h"
+#include "duel_generations.h"
 #include "duel_perf.h"
 #include "duel_stats.h"
 
@@ -138,16 +139,6 @@ static int rep_ladder_line(void *ud, uint32_t line, char *text)
     return 0;
 }
 
-static int rep_seconds_line(void *ud, uint32_t line, char *text)
-{
-    rep_run *r = (rep_run *)ud;
-    char *f[DUEL_REP_MAX_FIELDS];
-    uint32_t n = rep_split(text, f, DUEL_REP_MAX_FIELDS);
-    if (line > 1 && n >= 17 && strcmp(f[1], "A") == 0)
-        r->seconds += strtod(f[n - 1], NULL);
-    return 0;
-}
-
 static int rep_read_run(rep *R, rep_run *r)
 {
     char err[4400], path[400];
@@ -174,8 +165,17 @@ static int rep_read_run(rep *R, rep_run *r)
                         "experiment writes it again)\n", R->dir, path, r->n_levels);
     if (e != 0 || !lc.ok)
         return 2;
-    snprintf(path, sizeof path, "%s/generations.csv", r->dir);
-    rep_lines(path, rep_seconds_line, r);
+    {
+        duel_gen_row *g;
+        size_t n, k;
+        if (duel_generations_read(r->dir, &g, &n, err, sizeof err) != 0) {
+            fprintf(stderr, "duel_evolve: experiment: %s/%s\n", R->dir, err);
+            return 2;
+        }
+        for (k = 0; k < n; k++)
+            r->seconds += g[k].pop == 'A' ? g[k].seconds : 0.0;
+        free(g);
+    }
     r->col[COL_LEVELS] = r->n_levels;
     r->col[COL_TOPGEN] = r->rows[r->n_levels - 1].generation;
     return 0;
@@ -546,33 +546,6 @@ typedef struct rep_rand {
     uint32_t gmax;
 } rep_rand;
 
-static int rep_rand_line(void *ud, uint32_t line, char *text)
-{
-    rep_rand *rr = (rep_rand *)ud;
-    char *f[DUEL_REP_MAX_FIELDS];
-    uint32_t n = rep_split(text, f, DUEL_REP_MAX_FIELDS), g;
-    double *c;
-    if (line == 1 || n < 17)
-        return 0;
-    g = (uint32_t)strtoul(f[0], NULL, 10);
-    if (g >= rr->gmax)
-        return 0;
-    c = rr->cur + 4 * (size_t)g;
-    {
-        double mnh = strtod(f[10], NULL), mxh = strtod(f[11], NULL), mnc = strtod(f[12], NULL),
-               mxc = strtod(f[13], NULL);
-        if (c[0] < 0 || mnc < c[0])
-            c[0] = mnc;
-        if (mxc > c[1])
-            c[1] = mxc;
-        if (c[2] < 0 || mnh < c[2])
-            c[2] = mnh;
-        if (mxh > c[3])
-            c[3] = mxh;
-    }
-    return 0;
-}
-
 typedef struct rep_fig7r {
     const rep *R;
     rep_rand rr;
@@ -611,11 +584,33 @@ static int rep_fig7_random(const rep *R, const char *path)
         if (!R->p->m[i].cfg.coev.random_fitness)
             continue;
         for (k = 0; k < R->m[i].n; k++) {
-            char p[400];
+            duel_gen_row *rows;
+            size_t n, j;
+            char err[4400];
             for (g = 0; g < 4 * x.rr.gmax; g++)
                 x.rr.cur[g] = g % 2 == 0 ? -1.0 : 0.0;
-            snprintf(p, sizeof p, "%s/generations.csv", R->runs[R->m[i].first + k].dir);
-            rep_lines(p, rep_rand_line, &x.rr);
+            if (duel_generations_read(R->runs[R->m[i].first + k].dir, &rows, &n, err, sizeof err) != 0) {
+                fprintf(stderr, "duel_evolve: experiment: %s\n", err);
+                free(x.rr.sum);
+                free(x.rr.cur);
+                return 1;
+            }
+            for (j = 0; j < n; j++) {
+                /* both populations' smallest and largest of the generation */
+                double *c;
+                if (rows[j].generation >= x.rr.gmax)
+                    continue;
+                c = x.rr.cur + 4 * (size_t)rows[j].generation;
+                if (c[0] < 0 || rows[j].min_conns < c[0])
+                    c[0] = rows[j].min_conns;
+                if (rows[j].max_conns > c[1])
+                    c[1] = rows[j].max_conns;
+                if (c[2] < 0 || rows[j].min_hidden < c[2])
+                    c[2] = rows[j].min_hidden;
+                if (rows[j].max_hidden > c[3])
+                    c[3] = rows[j].max_hidden;
+            }
+            free(rows);
             for (g = 0; g < x.rr.gmax; g++) {
                 const double *c = x.rr.cur + 4 * (size_t)g;
                 double *s = x.rr.sum + 5 * (size_t)g;
