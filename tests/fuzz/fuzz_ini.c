@@ -70,16 +70,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     __builtin_trap();
             {
                 char *t = duel_plan_text(plan); /* the canonical text parses back to the same text */
-                duel_plan *back = NULL;
+                duel_plan *again = NULL;
                 char *t2;
-                if (t == NULL || duel_plan_parse_text(&back, "back", t, strlen(t), err, sizeof err) != 0)
+                if (t == NULL || duel_plan_parse_text(&again, "back", t, strlen(t), err, sizeof err) != 0)
                     __builtin_trap();
-                t2 = duel_plan_text(back);
+                t2 = duel_plan_text(again);
                 if (t2 == NULL || strcmp(t, t2) != 0)
                     __builtin_trap();
                 free(t);
                 free(t2);
-                duel_plan_free(back);
+                duel_plan_free(again);
             }
         } else if (strncmp(err, "p.ini", 5) != 0 && strcmp(err, "out of memory") != 0) {
             __builtin_trap();
