@@ -82,7 +82,7 @@ resume)
   ls A/report/*.png A/report/*.svg > /dev/null || fail "no figures: $(ls A/report)"
   head -c 8 A/report/fig7-complexity.png | od -An -c | grep -q 'P   N   G' || fail "fig7 is not a PNG"
   grep -q '<svg' A/report/fig11-levels.svg || fail "fig11 is not an SVG"
-  grep -q '^| complexify | 3 |' A/report/table1.md || fail "table1.md: $(head -8 A/report/table1.md)"
+  grep -q '^| complexify | [0-9]* |' A/report/table1.md || fail "table1.md: $(head -8 A/report/table1.md)"
 
   # B: killed -9 in the middle of a run, SIGINT when the best-topology runs start, -9 again during the comparisons
   "$duel" experiment plan.ini --out B --jobs 2 --threads 2 --quiet "${scale[@]}" &
@@ -100,7 +100,7 @@ resume)
   [ "$rc" -eq 130 ] || [ "$rc" -eq 0 ] || fail "SIGINT: exit $rc"
   "$duel" experiment resume B --jobs 1 --threads 3 --quiet &
   pid=$!
-  wait_for $pid test -e B/runs/simplify-1/compare-cache.csv
+  wait_for $pid test -e B/runs/fixed-5-1/compare-cache.csv
   kill -9 $pid
   wait $pid 2>/dev/null || true
   sleep 0.3
