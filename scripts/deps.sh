@@ -4,7 +4,8 @@ set -euo pipefail
 PKGS="build-essential cmake ninja-build pkg-config libcmocka-dev procps clang llvm libclang-rt-14-dev \
       gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-system-arm \
       gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc valgrind graphviz \
-      libosmesa6-dev libpng-dev ffmpeg liblcm-dev liblcm-bin liblcm-java libglib2.0-dev python3-matplotlib"
+      libosmesa6-dev libpng-dev ffmpeg liblcm-dev liblcm-bin liblcm-java libglib2.0-dev python3-matplotlib \
+      openmpi-bin libopenmpi-dev"
 # LCM's TCP hub (lcm.lcm.TCPService, the tests over tcpq://) runs on any Java runtime
 command -v java > /dev/null 2>&1 || PKGS="$PKGS default-jre-headless"
 SUDO=""

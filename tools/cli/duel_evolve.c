@@ -5,6 +5,7 @@
 
 #include "duel.h"
 #include "duel_cli.h"
+#include "duel_mpi.h"
 
 static void duel_usage(FILE *f)
 {
@@ -32,7 +33,8 @@ static void duel_usage(FILE *f)
                "[--every N] [--sensors] [--video FILE.mp4] [--fps 30]\n"
                "       duel_evolve render-net BLOB --out FILE.png\n"
                "       duel_evolve export BLOB --c-array NAME [-o FILE.c]\n"
-               "Robot duels of spec v%d (docs/duelsim.md).\n", DUEL_SPEC_VERSION);
+               "Robot duels of spec v%d (docs/duelsim.md). Under mpirun, run, resume and experiment use every rank "
+               "(docs/cluster.md)%s.\n", DUEL_SPEC_VERSION, duel_mpi_built() ? "" : "; this build has no MPI");
 }
 
 typedef struct duel_command {
@@ -63,16 +65,43 @@ static int duel_stdout_status(const char *cmd, int rc)
     return rc;
 }
 
+/* argv[0] a subcommand: runs it (an MPI rank executes an experiment's tasks through this). */
+static int duel_dispatch(int argc, char **argv)
+{
+    size_t i;
+    for (i = 0; i < sizeof duel_commands / sizeof duel_commands[0]; i++)
+        if (strcmp(argv[0], duel_commands[i].name) == 0)
+            return duel_commands[i].run(argc - 1, argv + 1);
+    fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[0]);
+    return 2;
+}
+
 int main(int argc, char **argv)
 {
     size_t i;
+    int rc = duel_mpi_start(argc - 1, argv + 1);
+    if (rc != 0)
+        return duel_mpi_finish(rc);
+    if (duel_mpi_size() > 1) {
+        /* under mpirun: rank 0 runs the command, the others do what it hands them */
+        int spread = argc >= 2 && (strcmp(argv[1], "run") == 0 || strcmp(argv[1], "resume") == 0 ||
+                                   strcmp(argv[1], "experiment") == 0);
+        if (!spread) {
+            if (duel_mpi_rank() == 0)
+                fprintf(stderr, "duel_evolve: %s runs in one process: under mpirun only run, resume and experiment "
+                                "spread their work over the ranks\n", argc >= 2 ? argv[1] : "(no command)");
+            return duel_mpi_finish(2);
+        }
+        if (duel_mpi_rank() != 0)
+            return duel_mpi_finish(duel_mpi_serve(argc - 1, argv + 1, duel_dispatch));
+    }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         duel_usage(argc < 2 ? stderr : stdout);
         return duel_stdout_status("--help", argc < 2 ? 2 : 0);
     }
     for (i = 0; i < sizeof duel_commands / sizeof duel_commands[0]; i++)
         if (strcmp(argv[1], duel_commands[i].name) == 0)
-            return duel_stdout_status(argv[1], duel_commands[i].run(argc - 2, argv + 2));
+            return duel_mpi_finish(duel_stdout_status(argv[1], duel_commands[i].run(argc - 2, argv + 2)));
     fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
     duel_usage(stderr);
     return 2;

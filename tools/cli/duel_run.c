@@ -20,6 +20,7 @@
 #include "duel_generations.h"
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
+#include "duel_mpi.h"
 #include "neat_coev.h"
 #include "neat_phenotype.h"
 
@@ -122,6 +123,8 @@ static int duel_save_checkpoint(const duel_run *R)
 
 static const char *duel_game_error(int err)
 {
+    if (err == DUEL_GAMES_E_REMOTE)
+        return "another process of the MPI job failed";
     if (err <= -200)
         return "the duel refused a network";
     if (err <= -100)
@@ -317,7 +320,7 @@ static int duel_loop(duel_run *R)
         int err;
         if (R->log_failed)
             return 1; /* what was done is saved; resume continues from it */
-        if (duel_stop) {
+        if (duel_stop || duel_mpi_stop_requested()) {
             duel_clear_bar(R);
             duel_log(R, "interrupted before generation %u", neat_coev_generation(R->coev));
             fprintf(stderr, "duel_evolve: interrupted; %u generations are saved. Resume with: duel_evolve resume %s\n",
@@ -375,10 +378,15 @@ static int duel_parse_u32(const char *opt, const char *v, uint32_t lo, uint32_t 
     return 0;
 }
 
+/* The lock of this process's run directory (-1: none), given back when the command ends: an MPI rank executes
+ * one experiment task after another in one process. */
+static int duel_lock_fd = -1;
+
 /* One process per run directory: a second run or resume there is refused. */
 static int duel_lock(const char *dir)
 {
-    if (duel_dir_lock(dir) >= 0)
+    duel_lock_fd = duel_dir_lock(dir);
+    if (duel_lock_fd >= 0)
         return 0;
     if (errno == EWOULDBLOCK)
         fprintf(stderr, "duel_evolve: %s is in use by another duel_evolve run or resume\n", dir);
@@ -453,12 +461,29 @@ static int duel_has_history(const char *dir, char *msg, size_t cap)
 
 static int duel_go(duel_run *R)
 {
-    int err = duel_games_create(&R->games, R->threads, &R->cfg.neat);
+    uint32_t ranks = duel_mpi_games_ranks(), hosts = 2u * R->cfg.neat.pop_size;
+    char line[400];
+    int err;
+    if (ranks > hosts) {
+        /* a generation's host games go out one host's games at a time: more ranks than hosts would wait */
+        fprintf(stderr, "duel_evolve: %u MPI ranks for a run of 2 x %u networks: at most %u ranks can play its "
+                        "games\n", ranks, R->cfg.neat.pop_size, hosts);
+        neat_coev_free(R->coev);
+        return 2;
+    }
+    err = duel_games_create(&R->games, R->threads == 0 && ranks > 1 ? duel_mpi_default_threads() : R->threads,
+                            &R->cfg.neat);
     if (err) {
         fprintf(stderr, "duel_evolve: out of memory\n");
         return 1;
     }
+    duel_mpi_attach(R->games);
+    if (ranks > 1)
+        duel_log(R, "mpi: %u ranks, %u threads on rank 0", ranks, duel_games_threads(R->games));
     err = duel_loop(R);
+    duel_mpi_describe(line, sizeof line);
+    if (line[0] != '\0')
+        duel_log(R, "mpi: %s", line);
     duel_games_free(R->games);
     neat_coev_free(R->coev);
     return err;
@@ -538,7 +563,31 @@ static int duel_prepare_dir(duel_run *R)
     return duel_write_config(R) != 0 ? 1 : 0;
 }
 
+static void duel_unlock(void)
+{
+    if (duel_lock_fd >= 0)
+        close(duel_lock_fd);
+    duel_lock_fd = -1;
+}
+
+static int duel_run_main(int argc, char **argv);
+static int duel_resume_main(int argc, char **argv);
+
 int duel_cmd_run(int argc, char **argv)
+{
+    int rc = duel_run_main(argc, argv);
+    duel_unlock();
+    return rc;
+}
+
+int duel_cmd_resume(int argc, char **argv)
+{
+    int rc = duel_resume_main(argc, argv);
+    duel_unlock();
+    return rc;
+}
+
+static int duel_run_main(int argc, char **argv)
 {
     duel_run R;
     const char *config = NULL;
@@ -636,7 +685,7 @@ static int duel_check_start(duel_run *R, const char *ckpt)
     return 0;
 }
 
-int duel_cmd_resume(int argc, char **argv)
+static int duel_resume_main(int argc, char **argv)
 {
     duel_run R;
     char err[600], path[4200], *sets[64];

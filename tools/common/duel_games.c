@@ -19,59 +19,98 @@ struct duel_games {
     neat_params p;
     duel_progress_fn progress;
     void *progress_ud;
-    uint64_t played, steps;
-    /* the batch in flight */
+    duel_remote_fn remote;
+    void *remote_ud;
+    uint64_t played, steps, batches;
+    /* the batch in flight: coevolution games (games) or games between blobs (matches, nets) */
     pthread_mutex_t lock;
     pthread_cond_t moved;
     neat_game *games;
+    duel_match *matches;
+    const duel_net *nets;
     size_t n, next, done;
     size_t err_at; /* lowest failing game index, n if none */
     int err;
     uint64_t batch_steps;
 };
 
-/* One worker's two networks, reloaded only when the genome changes. */
+/* One worker's two networks, reloaded only when the player changes. */
 typedef struct duel_seat {
     neat_phenotype ph;
-    const neat_genome *g;
+    const void *key; /* the genome, or the duel_net */
 } duel_seat;
 
-static int duel_seat_load(duel_seat *s, const neat_genome *g, const neat_params *p)
+static int duel_seat_load(duel_seat *s, const duel_games *dg, const void *key)
 {
     int err;
-    if (s->g == g)
+    if (s->key == key)
         return 0; /* duel_play resets the network at the start of a game */
-    s->g = NULL;
-    err = neat_phenotype_load(&s->ph, g, p);
+    s->key = NULL;
+    if (dg->games != NULL) {
+        err = neat_phenotype_load(&s->ph, (const neat_genome *)key, &dg->p);
+    } else {
+        const duel_net *net = (const duel_net *)key;
+        err = neat_phenotype_load_blob(&s->ph, net->blob, net->len);
+    }
     if (err == 0)
-        s->g = g;
+        s->key = key;
     return err;
 }
 
-static int duel_play_one(duel_games *dg, duel_seat seat[2], neat_game *gm, uint32_t *steps)
+/* Game i of the batch: its two players, its food, a's side; its result set. */
+static int duel_play_one(duel_games *dg, duel_seat seat[2], size_t i, uint32_t *steps)
 {
     duel_controller west, east;
     duel_result res;
-    int err = duel_seat_load(&seat[0], gm->a, &dg->p);
+    const void *a, *b;
+    int32_t config;
+    int a_first, err;
+    int8_t result;
+    if (dg->games != NULL) {
+        a = dg->games[i].a;
+        b = dg->games[i].b;
+        config = dg->games[i].config;
+        a_first = dg->games[i].a_first;
+    } else {
+        a = &dg->nets[dg->matches[i].a];
+        b = &dg->nets[dg->matches[i].b];
+        config = dg->matches[i].config;
+        a_first = dg->matches[i].a_first;
+    }
+    err = duel_seat_load(&seat[0], dg, a);
     if (!err)
-        err = duel_seat_load(&seat[1], gm->b, &dg->p);
+        err = duel_seat_load(&seat[1], dg, b);
     if (err)
         return err;
     memset(&west, 0, sizeof west);
     memset(&east, 0, sizeof east);
-    west.net = gm->a_first ? &seat[0].ph.net : &seat[1].ph.net;
-    east.net = gm->a_first ? &seat[1].ph.net : &seat[0].ph.net;
-    err = duel_play(&west, &east, gm->config < 0 ? DUEL_TRAINING : gm->config, &res, NULL, NULL);
+    west.net = a_first ? &seat[0].ph.net : &seat[1].ph.net;
+    east.net = a_first ? &seat[1].ph.net : &seat[0].ph.net;
+    err = duel_play(&west, &east, config < 0 ? DUEL_TRAINING : config, &res, NULL, NULL);
     if (err)
         return err - 200;
     *steps = res.steps;
     if (res.outcome == DUEL_WEST_WINS)
-        gm->result = gm->a_first ? 1 : -1;
+        result = a_first ? 1 : -1;
     else if (res.outcome == DUEL_EAST_WINS)
-        gm->result = gm->a_first ? -1 : 1;
+        result = a_first ? -1 : 1;
     else
-        gm->result = 0;
+        result = 0;
+    if (dg->games != NULL)
+        dg->games[i].result = result;
+    else
+        dg->matches[i].result = result;
     return 0;
+}
+
+/* The lowest failing game wins, whoever played it: the error is the same whatever the threads or ranks. */
+static void duel_fail_locked(duel_games *dg, size_t at, int err)
+{
+    if (at < dg->err_at) {
+        dg->err_at = at;
+        dg->err = err;
+    }
+    dg->next = dg->n; /* stop handing out work */
 }
 
 static void *duel_worker(void *arg)
@@ -82,7 +121,7 @@ static void *duel_worker(void *arg)
     int k;
     for (k = 0; k < 2; k++) {
         neat_phenotype_init(&seat[k].ph);
-        seat[k].g = NULL;
+        seat[k].key = NULL;
     }
     for (;;) {
         size_t i, from, to;
@@ -97,15 +136,11 @@ static void *duel_worker(void *arg)
             break;
         for (i = from; i < to; i++) {
             uint32_t s = 0;
-            int err = duel_play_one(dg, seat, &dg->games[i], &s);
+            int err = duel_play_one(dg, seat, i, &s);
             steps += s;
             if (err) {
                 pthread_mutex_lock(&dg->lock);
-                if (i < dg->err_at) {
-                    dg->err_at = i;
-                    dg->err = err;
-                }
-                dg->next = dg->n; /* stop handing out work */
+                duel_fail_locked(dg, i, err);
                 pthread_mutex_unlock(&dg->lock);
                 break;
             }
@@ -151,10 +186,21 @@ uint32_t duel_games_threads(const duel_games *dg)
     return dg->threads;
 }
 
+const neat_params *duel_games_params(const duel_games *dg)
+{
+    return &dg->p;
+}
+
 void duel_games_on_progress(duel_games *dg, duel_progress_fn fn, void *ud)
 {
     dg->progress = fn;
     dg->progress_ud = ud;
+}
+
+void duel_games_set_remote(duel_games *dg, duel_remote_fn fn, void *ud)
+{
+    dg->remote = fn;
+    dg->remote_ud = ud;
 }
 
 uint64_t duel_games_played(const duel_games *dg)
@@ -167,52 +213,131 @@ uint64_t duel_games_steps(const duel_games *dg)
     return dg->steps;
 }
 
-int duel_games_play(void *ud, neat_game *games, size_t n)
+neat_game *duel_games_batch(duel_games *dg, size_t *n, uint64_t *batch_no)
 {
-    duel_games *dg = (duel_games *)ud;
+    *n = dg->n;
+    *batch_no = dg->batches;
+    return dg->games;
+}
+
+size_t duel_games_error_at(const duel_games *dg)
+{
+    return dg->err_at;
+}
+
+size_t duel_games_take(duel_games *dg, size_t max, size_t *from)
+{
+    size_t got;
+    pthread_mutex_lock(&dg->lock);
+    *from = dg->next;
+    got = dg->n - dg->next < max ? dg->n - dg->next : max;
+    dg->next += got;
+    pthread_mutex_unlock(&dg->lock);
+    return got;
+}
+
+void duel_games_remote_done(duel_games *dg, size_t count, uint64_t steps, int err, size_t err_at)
+{
+    pthread_mutex_lock(&dg->lock);
+    dg->done += count;
+    dg->batch_steps += steps;
+    if (err)
+        duel_fail_locked(dg, err_at, err);
+    pthread_mutex_unlock(&dg->lock);
+}
+
+/* The batch set up in dg (games or matches, n): played by the threads here and, with a remote executor, by
+ * other processes too, whose share the remote function hands out and collects on this thread. */
+static int duel_games_run(duel_games *dg, size_t n)
+{
     pthread_t th[256];
     uint32_t t, nt = dg->threads < 256 ? dg->threads : 256;
-    int started = 0;
-    if (n == 0)
-        return 0;
-    if ((size_t)nt > (n + DUEL_CHUNK - 1) / DUEL_CHUNK)
-        nt = (uint32_t)((n + DUEL_CHUNK - 1) / DUEL_CHUNK);
-    dg->games = games;
+    int started = 0, remote_err = 0;
     dg->n = n;
     dg->next = dg->done = 0;
     dg->err_at = n;
     dg->err = 0;
     dg->batch_steps = 0;
-    for (t = 0; t < nt; t++)
+    dg->batches++;
+    if ((size_t)nt > (n + DUEL_CHUNK - 1) / DUEL_CHUNK)
+        nt = (uint32_t)((n + DUEL_CHUNK - 1) / DUEL_CHUNK);
+    /* a remote executor first: its processes start on their share while the threads here start */
+    if (dg->remote != NULL && dg->remote(dg->remote_ud, dg) < 0)
+        remote_err = 1;
+    for (t = 0; t < nt && !remote_err; t++)
         if (pthread_create(&th[t], NULL, duel_worker, dg) == 0)
             started++;
-    if (started == 0)
+    if (started == 0 && dg->remote == NULL)
         duel_worker(dg); /* no thread to be had: play here */
-    /* progress while the workers play */
-    pthread_mutex_lock(&dg->lock);
-    while (started > 0 && dg->done < n && !dg->err) {
+    /* progress while the workers play (and, with a remote executor, its messages served every 0.1 ms) */
+    for (;;) {
         struct timespec until;
         size_t done;
-        clock_gettime(CLOCK_REALTIME, &until);
-        until.tv_nsec += 200000000L;
-        if (until.tv_nsec >= 1000000000L) {
-            until.tv_sec++;
-            until.tv_nsec -= 1000000000L;
+        int in_flight = 0, finished;
+        if (dg->remote != NULL && !remote_err) {
+            in_flight = dg->remote(dg->remote_ud, dg);
+            if (in_flight < 0) {
+                remote_err = 1;
+                in_flight = 0;
+            }
         }
-        pthread_cond_timedwait(&dg->moved, &dg->lock, &until);
-        done = dg->done;
-        if (dg->progress != NULL && done < n) {
+        pthread_mutex_lock(&dg->lock);
+        if (started == 0 && dg->remote != NULL && in_flight == 0 && dg->next < n && !remote_err) {
+            /* nobody here to play what is left, and no other process asking: play it on this thread */
             pthread_mutex_unlock(&dg->lock);
-            dg->progress(dg->progress_ud, done, n);
+            duel_worker(dg);
             pthread_mutex_lock(&dg->lock);
         }
+        finished = remote_err || ((dg->done >= n || dg->err) && in_flight == 0);
+        if (!finished) {
+            clock_gettime(CLOCK_REALTIME, &until);
+            until.tv_nsec += dg->remote != NULL ? 100000L : 200000000L;
+            if (until.tv_nsec >= 1000000000L) {
+                until.tv_sec++;
+                until.tv_nsec -= 1000000000L;
+            }
+            pthread_cond_timedwait(&dg->moved, &dg->lock, &until);
+        }
+        done = dg->done;
+        pthread_mutex_unlock(&dg->lock);
+        if (finished)
+            break;
+        if (dg->progress != NULL && done < n)
+            dg->progress(dg->progress_ud, done, n);
     }
-    pthread_mutex_unlock(&dg->lock);
     for (t = 0; t < (uint32_t)started; t++)
         pthread_join(th[t], NULL);
+    if (remote_err && !dg->err)
+        dg->err = DUEL_GAMES_E_REMOTE;
     dg->played += dg->done;
     dg->steps += dg->batch_steps;
     if (dg->progress != NULL && !dg->err)
         dg->progress(dg->progress_ud, n, n);
     return dg->err;
+}
+
+int duel_games_play(void *ud, neat_game *games, size_t n)
+{
+    duel_games *dg = (duel_games *)ud;
+    if (n == 0)
+        return 0;
+    dg->games = games;
+    dg->matches = NULL;
+    dg->nets = NULL;
+    return duel_games_run(dg, n);
+}
+
+int duel_games_play_nets(duel_games *dg, const duel_net *nets, duel_match *m, size_t n)
+{
+    duel_remote_fn remote = dg->remote;
+    int err;
+    if (n == 0)
+        return 0;
+    dg->games = NULL;
+    dg->matches = m;
+    dg->nets = nets;
+    dg->remote = NULL; /* games between blobs are another process's share: played here */
+    err = duel_games_run(dg, n);
+    dg->remote = remote;
+    return err;
 }

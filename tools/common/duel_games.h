@@ -22,6 +22,43 @@ void duel_games_on_progress(duel_games *dg, duel_progress_fn fn, void *ud);
  * its error code. The results do not depend on the number of threads. */
 int duel_games_play(void *ud, neat_game *games, size_t n);
 
+/* Games between networks given as blobs (another process's share of a
+ * batch, tools/mpi): match i plays nets[a] against nets[b], a on the west
+ * side when a_first, config as in neat_game; result as in neat_game. The
+ * same results as the genomes the blobs were written from. */
+typedef struct duel_net {
+    const uint8_t *blob;
+    size_t len;
+} duel_net;
+typedef struct duel_match {
+    uint32_t a, b;
+    int32_t config;
+    uint8_t a_first;
+    int8_t result;
+} duel_match;
+int duel_games_play_nets(duel_games *dg, const duel_net *nets, duel_match *m, size_t n);
+/* After a batch that failed: the index of the lowest failing game. */
+size_t duel_games_error_at(const duel_games *dg);
+
+/* A remote executor (tools/mpi/duel_mpi_games.c): while a batch of
+ * duel_games_play is in flight, fn is called on the calling thread, once
+ * as the batch starts and then every 0.1 ms or so. It takes games with
+ * duel_games_take, has them played elsewhere, writes their results into the
+ * batch's games and reports them with duel_games_remote_done. It returns how
+ * many of its requests are still out (the batch ends when every game is done
+ * and none is out), or a negative value when it cannot go on (the batch then
+ * fails with DUEL_GAMES_E_REMOTE). */
+#define DUEL_GAMES_E_REMOTE (-300)
+typedef int (*duel_remote_fn)(void *ud, duel_games *dg);
+void duel_games_set_remote(duel_games *dg, duel_remote_fn fn, void *ud);
+/* The batch in flight, its size, and its number (1 for the first batch). */
+neat_game *duel_games_batch(duel_games *dg, size_t *n, uint64_t *batch_no);
+/* Up to max games not yet handed out, from *from on: how many (0: none left). */
+size_t duel_games_take(duel_games *dg, size_t max, size_t *from);
+/* count games played elsewhere, with their steps; err (0 if none) at game err_at of the batch. */
+void duel_games_remote_done(duel_games *dg, size_t count, uint64_t steps, int err, size_t err_at);
+const neat_params *duel_games_params(const duel_games *dg);
+
 /* Totals since creation. */
 uint64_t duel_games_played(const duel_games *dg);
 uint64_t duel_games_steps(const duel_games *dg);

@@ -17,21 +17,11 @@ void neat_phenotype_free(neat_phenotype *ph)
     neat_phenotype_init(ph);
 }
 
-int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_params *p)
+/* ph->blob holds ph->blob_len bytes: the network it describes, loaded. */
+static int neat_phenotype_load_own(neat_phenotype *ph)
 {
-    size_t need = neat_blob_size(g), mem_need;
-    int err;
-    if (need > ph->blob_cap) {
-        uint8_t *nb = (uint8_t *)realloc(ph->blob, need);
-        if (nb == NULL)
-            return NEAT_E_NOMEM;
-        ph->blob = nb;
-        ph->blob_cap = need;
-    }
-    err = neat_blob_write(g, p->n_inputs, p->n_outputs, ph->blob, ph->blob_cap, &ph->blob_len);
-    if (err)
-        return err;
-    err = nrt_mem_required(ph->blob, ph->blob_len, &mem_need);
+    size_t mem_need;
+    int err = nrt_mem_required(ph->blob, ph->blob_len, &mem_need);
     if (err)
         return err - 100;
     if (mem_need > ph->mem_cap) {
@@ -43,6 +33,39 @@ int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_par
     }
     err = nrt_load(&ph->net, ph->blob, ph->blob_len, ph->mem, ph->mem_cap);
     return err ? err - 100 : 0;
+}
+
+static int neat_phenotype_reserve(neat_phenotype *ph, size_t need)
+{
+    if (need > ph->blob_cap) {
+        uint8_t *nb = (uint8_t *)realloc(ph->blob, need);
+        if (nb == NULL)
+            return NEAT_E_NOMEM;
+        ph->blob = nb;
+        ph->blob_cap = need;
+    }
+    return 0;
+}
+
+int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_params *p)
+{
+    int err = neat_phenotype_reserve(ph, neat_blob_size(g));
+    if (err)
+        return err;
+    err = neat_blob_write(g, p->n_inputs, p->n_outputs, ph->blob, ph->blob_cap, &ph->blob_len);
+    if (err)
+        return err;
+    return neat_phenotype_load_own(ph);
+}
+
+int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len)
+{
+    int err = neat_phenotype_reserve(ph, len > 0 ? len : 1);
+    if (err)
+        return err;
+    memcpy(ph->blob, blob, len);
+    ph->blob_len = len;
+    return neat_phenotype_load_own(ph);
 }
 
 nrt_q15 neat_q15(double x)

@@ -20,6 +20,7 @@
 #include "duel_exp.h"
 #include "duel_files.h"
 #include "duel_generations.h"
+#include "duel_mpi.h"
 #include "duel_perf.h"
 #include "neat_coev.h"
 
@@ -240,7 +241,8 @@ typedef struct duel_exp_run_state {
     uint32_t method, k, generations;
     char dir[300];
     int state;
-    pid_t pid;                 /* running: its child */
+    pid_t pid;                 /* running: its child (one process), 0 otherwise */
+    int running;               /* played now (as a child, or by a slot of an MPI job) */
     uint32_t gen_done;         /* from generations.csv, for the progress line */
     double seconds;            /* the seconds of the generations recorded */
     double games;              /* the games they played */
@@ -334,31 +336,47 @@ static pid_t duel_exp_spawn(const char *self, char *const *args, int quiet_out)
     _exit(127);
 }
 
-static pid_t duel_exp_start_run(const char *self, const duel_plan *p, duel_exp_run_state *r, uint32_t threads)
-{
+/* The command line that plays run r from where it is: argv[0] the subcommand (run or resume), in a's buffers. */
+typedef struct duel_exp_args {
     char cfg[200], seed[16], thr[16];
     char *argv[16];
+    int argc;
+} duel_exp_args;
+
+static void duel_exp_run_args(duel_exp_args *a, const duel_plan *p, duel_exp_run_state *r, uint32_t threads)
+{
     int n = 0;
-    snprintf(thr, sizeof thr, "%u", threads);
-    argv[n++] = (char *)"duel_evolve";
+    snprintf(a->thr, sizeof a->thr, "%u", threads);
     if (r->state == DUEL_RUN_NEW) {
-        snprintf(cfg, sizeof cfg, "configs/%s.ini", p->m[r->method].name);
-        snprintf(seed, sizeof seed, "%u", p->seed + (r->k - 1));
-        argv[n++] = (char *)"run";
-        argv[n++] = (char *)"--config";
-        argv[n++] = cfg;
-        argv[n++] = (char *)"--seed";
-        argv[n++] = seed;
-        argv[n++] = (char *)"--out";
-        argv[n++] = r->dir;
+        snprintf(a->cfg, sizeof a->cfg, "configs/%s.ini", p->m[r->method].name);
+        snprintf(a->seed, sizeof a->seed, "%u", p->seed + (r->k - 1));
+        a->argv[n++] = (char *)"run";
+        a->argv[n++] = (char *)"--config";
+        a->argv[n++] = a->cfg;
+        a->argv[n++] = (char *)"--seed";
+        a->argv[n++] = a->seed;
+        a->argv[n++] = (char *)"--out";
+        a->argv[n++] = r->dir;
     } else {
-        argv[n++] = (char *)"resume";
-        argv[n++] = r->dir;
+        a->argv[n++] = (char *)"resume";
+        a->argv[n++] = r->dir;
     }
-    argv[n++] = (char *)"--threads";
-    argv[n++] = thr;
-    argv[n++] = (char *)"--quiet";
-    argv[n] = NULL;
+    a->argv[n++] = (char *)"--threads";
+    a->argv[n++] = a->thr;
+    a->argv[n++] = (char *)"--quiet";
+    a->argv[n] = NULL;
+    a->argc = n;
+}
+
+static pid_t duel_exp_start_run(const char *self, const duel_plan *p, duel_exp_run_state *r, uint32_t threads)
+{
+    duel_exp_args a;
+    char *argv[17];
+    int i;
+    duel_exp_run_args(&a, p, r, threads);
+    argv[0] = (char *)"duel_evolve";
+    for (i = 0; i <= a.argc; i++)
+        argv[i + 1] = a.argv[i];
     return duel_exp_spawn(self, argv, 1);
 }
 
@@ -407,7 +425,7 @@ static void duel_exp_show(duel_exp_sched *s, uint32_t jobs, int final)
     s->last_line = now;
     for (k = 0; k < s->n_runs; k++) {
         duel_exp_run_state *r = &s->runs[k];
-        if (r->pid > 0)
+        if (r->running)
             duel_exp_progress_of(r);
         if (r->state != DUEL_RUN_DONE)
             left += duel_exp_rate(s, r->method) * (double)(r->generations - (r->gen_done < r->generations ? r->gen_done : r->generations));
@@ -440,7 +458,7 @@ static void duel_exp_show(duel_exp_sched *s, uint32_t jobs, int final)
         snprintf(eta, sizeof eta, "%s", s->done == s->n_runs ? "0:00:00" : "(measuring)");
     n += (size_t)snprintf(line + n, sizeof line - n, "experiment: %u/%u runs done", s->done, s->n_runs);
     for (k = 0; k < s->n_runs && n < sizeof line - 80; k++)
-        if (s->runs[k].pid > 0)
+        if (s->runs[k].running)
             n += (size_t)snprintf(line + n, sizeof line - n, "%s %s %u/%u", running++ ? "," : ";",
                                   s->runs[k].dir + 5, s->runs[k].gen_done, s->runs[k].generations);
     snprintf(line + n, sizeof line - n, "; about %s to the end", eta);
@@ -573,6 +591,7 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
                 failed = 1;
                 break;
             }
+            r->running = 1;
             running++;
         }
         if (running == 0)
@@ -599,6 +618,7 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
             continue;
         running--;
         s->runs[k].pid = 0;
+        s->runs[k].running = 0;
         duel_exp_progress_of(&s->runs[k]);
         if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
             s->runs[k].state = DUEL_RUN_DONE;
@@ -624,6 +644,209 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
     if (duel_exp_stop)
         return 130;
     return failed ? 1 : 0;
+}
+
+/* ---- the runs, comparisons and ladders over the slots of an MPI job (tools/mpi/duel_mpi.h) */
+
+enum { DUEL_TASK_NONE = 0, DUEL_TASK_RUN, DUEL_TASK_COMPARE, DUEL_TASK_LADDER };
+
+typedef struct duel_exp_slot {
+    int kind;   /* DUEL_TASK_* (NONE: free) */
+    uint32_t run;
+} duel_exp_slot;
+
+/* `compare RUN --against REF... --threads T`: run k's comparisons against the reference rankings, cached in
+ * RUN/compare-cache.csv (the report reads them from there, as if they had been played there). */
+static int duel_exp_start_compare(const duel_exp_sched *s, uint32_t slot, uint32_t k)
+{
+    const duel_plan *p = s->p;
+    uint32_t n = p->m[p->ref].runs, j;
+    char **argv = (char **)calloc(n + 6, sizeof *argv), thr[16];
+    char (*refs)[300] = (char (*)[300])calloc(n, sizeof *refs);
+    int argc = 0, rc = -1;
+    if (argv != NULL && refs != NULL) {
+        snprintf(thr, sizeof thr, "%u", duel_mpi_exp_slot_threads(slot));
+        argv[argc++] = (char *)"compare";
+        argv[argc++] = (char *)s->runs[k].dir;
+        argv[argc++] = (char *)"--against";
+        for (j = 0; j < n; j++) {
+            duel_exp_run_dir(refs[j], sizeof refs[j], p, p->ref, j + 1);
+            argv[argc++] = refs[j];
+        }
+        argv[argc++] = (char *)"--threads";
+        argv[argc++] = thr;
+        rc = duel_mpi_exp_start(slot, argc, argv);
+    }
+    free(argv);
+    free(refs);
+    return rc;
+}
+
+static int duel_exp_has_ladder(const duel_exp_run_state *r)
+{
+    char path[400];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/ladder.csv", r->dir);
+    return stat(path, &st) == 0;
+}
+
+/* Every run to its end, every run compared against the reference rankings, every run laddered, tasks handed to
+ * the slots as they become free: first the reference runs' comparisons (the best-topology champion waits for
+ * them), then the runs, then the other comparisons, then the ladders. The comparisons and ladders that
+ * duel_exp_run does next then find everything in the caches. 0, or the exit status after one line. */
+static int duel_exp_play_mpi(duel_exp_sched *s, uint32_t user_threads)
+{
+    const duel_plan *p = s->p;
+    uint32_t n_slots, k, j, left = 0, ref_runs_left = 0, ref_cmp_left = 0, busy = 0;
+    duel_exp_slot *slot;
+    uint8_t *cmp_done, *lad_done;
+    int best_ready = !duel_exp_any_best(p), failed = 0, forwarded = 0;
+    for (k = 0; k < s->n_runs; k++)
+        left += s->runs[k].state != DUEL_RUN_DONE;
+    n_slots = duel_mpi_exp_open(left);
+    slot = (duel_exp_slot *)calloc(n_slots + 1u, sizeof *slot);
+    cmp_done = (uint8_t *)calloc(s->n_runs, 1);
+    lad_done = (uint8_t *)calloc(s->n_runs, 1);
+    if (n_slots == 0 || slot == NULL || cmp_done == NULL || lad_done == NULL) {
+        free(slot);
+        free(cmp_done);
+        free(lad_done);
+        fprintf(stderr, "duel_evolve: experiment: out of memory\n");
+        return 1;
+    }
+    if (!s->quiet) {
+        fprintf(stderr, "experiment: %u MPI ranks as %u slot%s (", duel_mpi_size(), n_slots, n_slots == 1 ? "" : "s");
+        for (j = 0; j < n_slots; j++)
+            fprintf(stderr, "%s%u rank%s x %u threads", j ? ", " : "", duel_mpi_exp_slot_ranks(j),
+                    duel_mpi_exp_slot_ranks(j) == 1 ? "" : "s", duel_mpi_exp_slot_threads(j));
+        fprintf(stderr, ")\n");
+    }
+    (void)user_threads;
+    for (k = 0; k < s->n_runs; k++) {
+        lad_done[k] = (uint8_t)duel_exp_has_ladder(&s->runs[k]);
+        if (s->runs[k].method == p->ref) {
+            ref_runs_left += s->runs[k].state != DUEL_RUN_DONE;
+            ref_cmp_left++;
+        }
+    }
+    for (;;) {
+        uint32_t which;
+        int status;
+        if (duel_exp_stop && !forwarded) {
+            for (j = 0; j < n_slots; j++)
+                if (slot[j].kind != DUEL_TASK_NONE)
+                    duel_mpi_exp_interrupt(j);
+            forwarded = 1;
+        }
+        if (!best_ready && ref_runs_left == 0 && ref_cmp_left == 0 && !duel_exp_stop && !failed) {
+            /* every comparison it needs is cached: nothing is played here */
+            int rc;
+            if (s->tty && !s->quiet)
+                fprintf(stderr, "\r\033[K");
+            rc = duel_exp_choose_best(p, duel_mpi_default_threads());
+            if (rc != 0) {
+                failed = rc;
+                continue;
+            }
+            best_ready = 1;
+        }
+        for (j = 0; j < n_slots && !duel_exp_stop && !failed; j++) {
+            int kind = DUEL_TASK_NONE, rc;
+            uint32_t pick = 0, pass;
+            if (slot[j].kind != DUEL_TASK_NONE)
+                continue;
+            for (pass = 0; pass < 4 && kind == DUEL_TASK_NONE; pass++)
+                for (k = 0; k < s->n_runs && kind == DUEL_TASK_NONE; k++) {
+                    duel_exp_run_state *r = &s->runs[k];
+                    int is_ref = r->method == p->ref, can_cmp = r->state == DUEL_RUN_DONE && !cmp_done[k] &&
+                                                                !r->running && ref_runs_left == 0;
+                    if (pass == 0 && is_ref && can_cmp)
+                        kind = DUEL_TASK_COMPARE;
+                    else if (pass == 1 && r->state != DUEL_RUN_DONE && !r->running &&
+                             (!p->m[r->method].start_best || best_ready))
+                        kind = DUEL_TASK_RUN;
+                    else if (pass == 2 && can_cmp)
+                        kind = DUEL_TASK_COMPARE;
+                    else if (pass == 3 && r->state == DUEL_RUN_DONE && !lad_done[k] && !r->running)
+                        kind = DUEL_TASK_LADDER;
+                    pick = k;
+                }
+            if (kind == DUEL_TASK_NONE)
+                break;
+            if (kind == DUEL_TASK_RUN) {
+                duel_exp_args a;
+                duel_exp_run_args(&a, p, &s->runs[pick], duel_mpi_exp_slot_threads(j));
+                rc = duel_mpi_exp_start(j, a.argc, a.argv);
+            } else if (kind == DUEL_TASK_COMPARE) {
+                rc = duel_exp_start_compare(s, j, pick);
+            } else {
+                char *argv[4];
+                argv[0] = (char *)"ladder";
+                argv[1] = s->runs[pick].dir;
+                argv[2] = (char *)"--top";
+                argv[3] = NULL;
+                rc = duel_mpi_exp_start(j, 3, argv);
+            }
+            if (rc != 0) {
+                fprintf(stderr, "duel_evolve: experiment: cannot hand %s a task\n", s->runs[pick].dir);
+                failed = 1;
+                break;
+            }
+            slot[j].kind = kind;
+            slot[j].run = pick;
+            s->runs[pick].running = 1;
+            busy++;
+        }
+        if (busy == 0)
+            break;
+        duel_exp_show(s, n_slots, 0);
+        if (!duel_mpi_exp_poll(&which, &status)) {
+            struct timespec ts = {0, 20000000L};
+            nanosleep(&ts, NULL);
+            continue;
+        }
+        k = slot[which].run;
+        busy--;
+        s->runs[k].running = 0;
+        if (slot[which].kind == DUEL_TASK_RUN) {
+            duel_exp_progress_of(&s->runs[k]);
+            if (status == 0) {
+                s->runs[k].state = DUEL_RUN_DONE;
+                s->done++;
+                ref_runs_left -= s->runs[k].method == p->ref;
+            } else {
+                s->runs[k].state = DUEL_RUN_PARTIAL;
+            }
+        } else if (status == 0 && slot[which].kind == DUEL_TASK_COMPARE) {
+            cmp_done[k] = 1;
+            ref_cmp_left -= s->runs[k].method == p->ref;
+        } else if (status == 0) {
+            lad_done[k] = 1;
+        }
+        if (status != 0 && !duel_exp_stop && !failed) {
+            if (s->tty && !s->quiet)
+                fprintf(stderr, "\r\033[K");
+            fprintf(stderr, "duel_evolve: experiment: %s of %s failed (exit status %d)%s%s%s\n",
+                    slot[which].kind == DUEL_TASK_RUN ? "the run" : slot[which].kind == DUEL_TASK_COMPARE ?
+                                                                     "the comparison" : "the ladder",
+                    s->runs[k].dir, status, slot[which].kind == DUEL_TASK_RUN ? "; its log: " : "",
+                    slot[which].kind == DUEL_TASK_RUN ? s->runs[k].dir : "",
+                    slot[which].kind == DUEL_TASK_RUN ? "/log.txt" : "");
+            failed = status == 2 ? 2 : 1;
+        }
+        slot[which].kind = DUEL_TASK_NONE;
+    }
+    if (!s->quiet) {
+        duel_exp_show(s, n_slots, 1);
+        if (s->tty)
+            fprintf(stderr, "\n");
+    }
+    free(slot);
+    free(cmp_done);
+    free(lad_done);
+    if (duel_exp_stop)
+        return 130;
+    return failed;
 }
 
 /* Every method's runs against the reference rankings (played once, then cached in each run). */
@@ -783,7 +1006,9 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
         free(s.runs);
         return 1;
     }
-    if (!o->quiet)
+    if (!o->quiet && duel_mpi_size() > 1)
+        fprintf(stderr, "experiment %s: %u methods, %u runs (%u done)\n", dir, p->n_methods, s.n_runs, s.done);
+    else if (!o->quiet)
         fprintf(stderr, "experiment %s: %u methods, %u runs (%u done), %u side by side with %u thread%s each\n", dir,
                 p->n_methods, s.n_runs, s.done, jobs, threads, threads == 1 ? "" : "s");
     memset(&sa, 0, sizeof sa);
@@ -791,7 +1016,10 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
     sa.sa_flags = (int)SA_RESETHAND; /* a second Ctrl-C stops at once (the runs keep their last generation) */
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
-    rc = duel_exp_play_runs(&s, self, jobs, threads, o->threads ? o->threads : 0);
+    if (duel_mpi_size() > 1)
+        rc = duel_exp_play_mpi(&s, o->threads);
+    else
+        rc = duel_exp_play_runs(&s, self, jobs, threads, o->threads ? o->threads : 0);
     if (rc == 0 && !o->quiet)
         fprintf(stderr, "experiment: every method against the %s rankings\n", p->reference);
     if (rc == 0)
