@@ -479,7 +479,8 @@ static int duel_go(duel_run *R)
     }
     duel_mpi_attach(R->games);
     if (ranks > 1)
-        duel_log(R, "mpi: %u ranks, %u threads on rank 0", ranks, duel_games_threads(R->games));
+        duel_log(R, "mpi: %u ranks, %u thread%s on rank 0", ranks, duel_games_threads(R->games),
+                 duel_games_threads(R->games) == 1 ? "" : "s");
     err = duel_loop(R);
     duel_mpi_describe(line, sizeof line);
     if (line[0] != '\0')

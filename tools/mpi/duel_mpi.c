@@ -1,5 +1,6 @@
 /* duel_mpi.c - the MPI job: started only under mpirun, every rank's build checked against rank 0's, ranks released at the end, messages counted. */
 #define _POSIX_C_SOURCE 200809L
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -238,6 +239,10 @@ int duel_mpi_serve(int argc, char **argv, int (*command)(int argc, char **argv))
      * reach stderr) */
     if (freopen("/dev/null", "w", stdout) == NULL)
         return 1;
+    /* Ctrl-C reaches every rank (mpirun forwards it): rank 0 finishes the generation in flight, saves it and
+     * releases the others, who must play that generation's games to the end for it */
+    signal(SIGINT, SIG_IGN);
+    signal(SIGTERM, SIG_IGN);
     if (argc >= 1 && strcmp(argv[0], "experiment") == 0)
         return duel_mpi_exp_serve(threads, command);
     if (argc >= 1 && (strcmp(argv[0], "run") == 0 || strcmp(argv[0], "resume") == 0)) {

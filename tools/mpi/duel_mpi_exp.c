@@ -41,7 +41,7 @@ static int *duel_exp_leader = NULL; /* [slots] the world rank of each remote slo
 
 /* ---- ranks 1..N-1 */
 
-/* A command line: NUL-terminated strings, one after the other. */
+/* A task: the directory rank 0 works in, then the command line; NUL-terminated strings, one after the other. */
 static int duel_exp_task(uint8_t *buf, size_t len, duel_mpi_command_fn cmd)
 {
     char **argv;
@@ -51,10 +51,18 @@ static int duel_exp_task(uint8_t *buf, size_t len, duel_mpi_command_fn cmd)
         return 2;
     for (i = 0; i < len; i++)
         n += buf[i] == '\0';
-    argv = (char **)calloc(n + 1, sizeof *argv);
+    if (n < 2)
+        return 2;
+    if (chdir((char *)buf) != 0) {
+        fprintf(stderr, "duel_evolve: mpi: rank %d (on %s) cannot enter the experiment directory %s: %s (every rank "
+                        "needs it at the same path: docs/cluster.md)\n",
+                duel_mpi_g.rank, duel_mpi_g.peers[duel_mpi_g.rank].host, (char *)buf, strerror(errno));
+        return 2;
+    }
+    argv = (char **)calloc(n, sizeof *argv);
     if (argv == NULL)
         return 1;
-    for (i = 0; i < len; i += strlen((char *)buf + i) + 1)
+    for (i = strlen((char *)buf) + 1; i < len; i += strlen((char *)buf + i) + 1)
         argv[argc++] = (char *)buf + i;
     argv[argc] = NULL;
     rc = cmd(argc, argv);
@@ -200,8 +208,9 @@ static pid_t duel_exp_spawn_local(char *const *argv)
 
 int duel_mpi_exp_start(uint32_t slot, int argc, char **argv)
 {
-    size_t len = 0, pos = 0;
+    size_t len, pos;
     uint8_t *buf;
+    char cwd[4096];
     int i, rc;
     if (duel_exp_local && slot == 0) {
         char **full = (char **)calloc((size_t)argc + 2, sizeof *full);
@@ -214,11 +223,16 @@ int duel_mpi_exp_start(uint32_t slot, int argc, char **argv)
         free(full);
         return duel_exp_child > 0 ? 0 : -1;
     }
+    if (getcwd(cwd, sizeof cwd) == NULL)
+        return -1;
+    len = strlen(cwd) + 1;
     for (i = 0; i < argc; i++)
         len += strlen(argv[i]) + 1;
-    buf = (uint8_t *)malloc(len ? len : 1);
+    buf = (uint8_t *)malloc(len);
     if (buf == NULL)
         return -1;
+    memcpy(buf, cwd, strlen(cwd) + 1);
+    pos = strlen(cwd) + 1;
     for (i = 0; i < argc; i++) {
         size_t n = strlen(argv[i]) + 1;
         memcpy(buf + pos, argv[i], n);

@@ -384,6 +384,7 @@ void duel_mpi_attach(duel_games *dg)
         duel_disp_g = d;
     }
     d->batch = 0;
+    memset(&duel_mpi_g.stats, 0, sizeof duel_mpi_g.stats); /* this run's messages, from here on */
     duel_games_set_remote(dg, duel_disp_poll, d);
 }
 
