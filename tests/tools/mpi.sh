@@ -67,19 +67,17 @@ sed '/^\[method fixed-5\]/,$d' plan.ini > plan-one.ini
 
 case "$what" in
 run)
-  "$duel" run --config "$cfg" --out ref --quiet
-  for n in 1 2 3; do
-    for t in 1 2; do
-      "${mpi[@]}" -np $n "$duel" run --config "$cfg" --out "n$n-t$t" --threads $t --quiet
-      same_run ref "n$n-t$t"
-    done
+  "$duel" run --config "$cfg" --out ref --quiet --generations 6
+  for nt in 1-1 1-2 2-2 3-1; do
+    "${mpi[@]}" -np "${nt%-*}" "$duel" run --config "$cfg" --out "n$nt" --threads "${nt#*-}" --quiet --generations 6
+    same_run ref "n$nt"
   done
-  grep -q "mpi: 3 ranks, 2 threads on rank 0" n3-t2/log.txt || fail "log.txt: $(grep mpi n3-t2/log.txt)"
-  grep -q "mpi: 3 MPI ranks; games sent in [0-9]* messages of [0-9]* bytes" n3-t2/log.txt ||
+  grep -q "mpi: 3 ranks, 1 thread on rank 0" n3-1/log.txt || fail "log.txt: $(grep mpi n3-1/log.txt)"
+  grep -q "mpi: 3 MPI ranks; games sent in [0-9]* messages of [0-9]* bytes" n3-1/log.txt ||
     fail "no message count in log.txt"
   # a resume spreads too, and stopping in the middle changes nothing
-  "${mpi[@]}" -np 2 "$duel" run --config "$cfg" --out part --generations 4 --quiet
-  "${mpi[@]}" -np 3 "$duel" resume part --generations 10 --quiet
+  "${mpi[@]}" -np 2 "$duel" run --config "$cfg" --out part --generations 3 --quiet
+  "${mpi[@]}" -np 3 "$duel" resume part --generations 6 --quiet
   same_run ref part
   echo "run: ok"
   ;;
@@ -98,9 +96,9 @@ experiment)
   echo "experiment: ok"
   ;;
 faults)
-  "$duel" run --config "$cfg" --out ref --quiet --generations 30
+  "$duel" run --config "$cfg" --out ref --quiet --generations 14
   # a rank killed in the middle of a run ends the job at once, with mpirun's line naming it
-  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out K --generations 30 --quiet 2> k.err & job=$!
+  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out K --generations 14 --quiet 2> k.err & job=$!
   wait_gens K $job 4
   kill -9 "$(rank_pid 1 "run --config $cfg --out K")"
   start=$SECONDS rc=0
@@ -112,19 +110,19 @@ faults)
   "${mpi[@]}" -np 2 "$duel" resume K --quiet
   same_run ref K
   # Ctrl-C to mpirun: rank 0 finishes the generation, saves it and releases the others
-  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out I --generations 30 2> i.err & job=$!
-  wait_gens I $job 3
+  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out I --generations 14 2> i.err & job=$!
+  wait_gens I $job 2
   kill -INT $job
   wait $job || true
   grep -q "interrupted before generation" I/log.txt || fail "Ctrl-C: no clean stop: $(tail -3 i.err)"
   "$duel" resume I --quiet
   same_run ref I
   # an experiment with a rank killed during its runs, continued with 2 ranks: one process's files
-  "$duel" experiment plan.ini --out E1 --quiet
-  "${mpi[@]}" -np 3 "$duel" experiment plan.ini --out EK --quiet 2> ek.err & job=$!
-  wait_gens EK/runs/complexify-1 $job 2
-  kill -9 "$(rank_pid 2 "experiment plan.ini --out EK")"
-  wait $job 2>/dev/null && fail "the experiment went on without rank 2"
+  "$duel" experiment plan-one.ini --out E1 --quiet
+  "${mpi[@]}" -np 3 "$duel" experiment plan-one.ini --out EK --quiet 2> ek.err & job=$!
+  wait_gens EK/runs/complexify-2 $job 2
+  kill -9 "$(rank_pid 1 "experiment plan-one.ini --out EK")"
+  wait $job 2>/dev/null && fail "the experiment went on without rank 1"
   sleep 0.3 # rank 0's child (its own slot) dies with it
   "${mpi[@]}" -np 2 "$duel" experiment resume EK --quiet
   diff <(snapshot E1) <(snapshot EK) > snap.diff || fail "continued experiment: other files: $(head -5 snap.diff)"

@@ -269,7 +269,7 @@ static int duel_games_run(duel_games *dg, size_t n)
             started++;
     if (started == 0 && dg->remote == NULL)
         duel_worker(dg); /* no thread to be had: play here */
-    /* progress while the workers play (and, with a remote executor, its messages served every 0.1 ms) */
+    /* progress while the workers play (and, with a remote executor, its messages served every millisecond) */
     for (;;) {
         struct timespec until;
         size_t done;
@@ -291,7 +291,7 @@ static int duel_games_run(duel_games *dg, size_t n)
         finished = remote_err || ((dg->done >= n || dg->err) && in_flight == 0);
         if (!finished) {
             clock_gettime(CLOCK_REALTIME, &until);
-            until.tv_nsec += dg->remote != NULL ? 100000L : 200000000L;
+            until.tv_nsec += dg->remote != NULL ? 1000000L : 200000000L;
             if (until.tv_nsec >= 1000000000L) {
                 until.tv_sec++;
                 until.tv_nsec -= 1000000000L;

@@ -42,12 +42,13 @@ size_t duel_games_error_at(const duel_games *dg);
 
 /* A remote executor (tools/mpi/duel_mpi_games.c): while a batch of
  * duel_games_play is in flight, fn is called on the calling thread, once
- * as the batch starts and then every 0.1 ms or so. It takes games with
- * duel_games_take, has them played elsewhere, writes their results into the
- * batch's games and reports them with duel_games_remote_done. It returns how
- * many of its requests are still out (the batch ends when every game is done
- * and none is out), or a negative value when it cannot go on (the batch then
- * fails with DUEL_GAMES_E_REMOTE). */
+ * as the batch starts and then about every millisecond (two chunks in
+ * flight per rank hide the wait). It takes games with duel_games_take, has
+ * them played elsewhere, writes their results into the batch's games and
+ * reports them with duel_games_remote_done. It returns how many of its
+ * requests are still out (the batch ends when every game is done and none
+ * is out), or a negative value when it cannot go on (the batch then fails
+ * with DUEL_GAMES_E_REMOTE). */
 #define DUEL_GAMES_E_REMOTE (-300)
 typedef int (*duel_remote_fn)(void *ud, duel_games *dg);
 void duel_games_set_remote(duel_games *dg, duel_remote_fn fn, void *ud);
