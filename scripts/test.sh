@@ -58,7 +58,7 @@ echo "== firmware: the runtime on Cortex-M0+, RAM, instructions per step under Q
 # (the QEMU identity tests themselves are in ctest: examples/firmware/test)
 ./scripts/firmware_figures.sh build
 
-echo "== fuzzing every decoder (libFuzzer, 30 s each; scripts/fuzz.sh SECONDS for a longer campaign)"
+echo "== fuzzing every decoder (libFuzzer, 30 s each, one per core; scripts/fuzz.sh SECONDS for a longer campaign)"
 CC=clang cmake -S . -B build-fuzz -G Ninja -DNEAT_FUZZ=ON -DNEAT_TESTS=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 ninja -C build-fuzz fuzzers
 ./scripts/fuzz.sh 30 build-fuzz

@@ -47,6 +47,7 @@ typedef struct duel_run {
     int bar_shown;
     double bar_drawn;          /* when the bar was last drawn */
     int log_failed;            /* log.txt could not be written: the run stops after the generation */
+    double gen_secs;           /* this process's generations, in seconds */
 } duel_run;
 
 static double duel_now(void)
@@ -336,6 +337,7 @@ static int duel_loop(duel_run *R)
             return 1;
         }
         secs = duel_now() - t0;
+        R->gen_secs += secs;
         if (duel_record(R, &rep, secs) != 0)
             return 1;
         duel_report(R, &rep, secs);
@@ -482,9 +484,15 @@ static int duel_go(duel_run *R)
         duel_log(R, "mpi: %u ranks, %u thread%s on rank 0", ranks, duel_games_threads(R->games),
                  duel_games_threads(R->games) == 1 ? "" : "s");
     err = duel_loop(R);
+    if (R->gen_secs > 0)
+        duel_log(R, "time: %.2f s in generations, %.2f s of it (%.1f %%) playing their %llu games",
+                 R->gen_secs, duel_games_seconds(R->games), 100.0 * duel_games_seconds(R->games) / R->gen_secs,
+                 (unsigned long long)duel_games_played(R->games));
     duel_mpi_describe(line, sizeof line);
     if (line[0] != '\0')
         duel_log(R, "mpi: %s", line);
+    if (R->log_failed && err == 0)
+        err = 1; /* its last lines are missing from log.txt: said on stderr, and not a success */
     duel_games_free(R->games);
     neat_coev_free(R->coev);
     return err;

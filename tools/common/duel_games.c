@@ -22,6 +22,7 @@ struct duel_games {
     duel_remote_fn remote;
     void *remote_ud;
     uint64_t played, steps, batches;
+    double secs; /* wall seconds in batches */
     /* the batch in flight: coevolution games (games) or games between blobs (matches, nets) */
     pthread_mutex_t lock;
     pthread_cond_t moved;
@@ -213,6 +214,11 @@ uint64_t duel_games_steps(const duel_games *dg)
     return dg->steps;
 }
 
+double duel_games_seconds(const duel_games *dg)
+{
+    return dg->secs;
+}
+
 neat_game *duel_games_batch(duel_games *dg, size_t *n, uint64_t *batch_no)
 {
     *n = dg->n;
@@ -248,8 +254,16 @@ void duel_games_remote_done(duel_games *dg, size_t count, uint64_t steps, int er
 
 /* The batch set up in dg (games or matches, n): played by the threads here and, with a remote executor, by
  * other processes too, whose share the remote function hands out and collects on this thread. */
+static double duel_games_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec / 1e9;
+}
+
 static int duel_games_run(duel_games *dg, size_t n)
 {
+    double t0 = duel_games_now();
     pthread_t th[256];
     uint32_t t, nt = dg->threads < 256 ? dg->threads : 256;
     int started = 0, remote_err = 0;
@@ -311,6 +325,7 @@ static int duel_games_run(duel_games *dg, size_t n)
         dg->err = DUEL_GAMES_E_REMOTE;
     dg->played += dg->done;
     dg->steps += dg->batch_steps;
+    dg->secs += duel_games_now() - t0;
     if (dg->progress != NULL && !dg->err)
         dg->progress(dg->progress_ud, n, n);
     return dg->err;

@@ -63,5 +63,6 @@ const neat_params *duel_games_params(const duel_games *dg);
 /* Totals since creation. */
 uint64_t duel_games_played(const duel_games *dg);
 uint64_t duel_games_steps(const duel_games *dg);
+double duel_games_seconds(const duel_games *dg); /* wall seconds from each batch's start to its end */
 
 #endif /* DUEL_GAMES_H */

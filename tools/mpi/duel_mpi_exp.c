@@ -24,10 +24,11 @@
  * ranks of the group playing a run's games; and, when the groups are single
  * ranks, rank 0 itself, through a child process of plain duel_evolve.
  *
- * Groups are formed once, at the start: with at least as many runs left as
- * ranks, every rank is a slot of its own (runs are independent: no message
- * crosses during a generation); with fewer, the ranks are shared out among
- * the runs, ranks / runs to each (docs/cluster.md has the measurement).
+ * Groups are formed once, at the start: a rank given a run of its own does
+ * all its work, a rank given a share of another run's games does 1/1.04 of
+ * it (measured: docs/cluster.md), so every rank is a slot of its own unless
+ * there are at least two ranks besides rank 0 for every run left; then the
+ * ranks are shared out among the runs, (N - 1) / runs to each.
  */
 
 typedef struct duel_setup {
