@@ -1,4 +1,4 @@
-/* duel_games.c - plays batches of coevolution games on worker threads, every network through the blob and the runtime. */
+/* duel_games.c - plays batches of coevolution games on worker threads, every network through the blob and the runtime (and, with a remote executor from tools/mpi, on other processes too). */
 #define _POSIX_C_SOURCE 200809L
 #include <pthread.h>
 #include <stdlib.h>

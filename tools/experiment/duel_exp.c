@@ -1,4 +1,4 @@
-/* duel_exp.c - an experiment's runs played side by side as child processes, continued after any interruption, the best-topology champion chosen, every method compared and laddered. */
+/* duel_exp.c - an experiment's runs played side by side as child processes (or as tasks on the slots of an MPI job), continued after any interruption, the best-topology champion chosen, every method compared and laddered. */
 #define _GNU_SOURCE /* prctl's PR_SET_PDEATHSIG, and the POSIX calls */
 #include <dirent.h>
 #include <errno.h>

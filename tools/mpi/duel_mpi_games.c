@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "duel_mpi_internal.h"
+#include "duel_mpi_wire.h"
 #include "neat.h"
 
 /*
@@ -20,29 +21,7 @@
  * matter: the run is the same with 1 rank or N.
  */
 
-#define DUEL_MPI_WORK_MAGIC 0x4b524f57u   /* "WORK" */
-#define DUEL_MPI_RESULT_MAGIC 0x544c5352u /* "RSLT" */
-#define DUEL_MPI_MAX_NETS (1u << 24)
 #define DUEL_MPI_CHUNK 24u /* games per chunk per thread of the rank: one host's games at the paper's protocol */
-
-typedef struct duel_work_hdr {
-    uint32_t magic, count;
-    uint64_t batch, from;
-    uint32_t n_new, pad;
-} duel_work_hdr;
-
-typedef struct duel_wire_match {
-    uint32_t a, b;
-    int32_t config;
-    uint8_t a_first, pad[3];
-} duel_wire_match;
-
-typedef struct duel_result_hdr {
-    uint32_t magic, count;
-    uint64_t batch, from;
-    int32_t err, pad;
-    uint64_t err_at, steps;
-} duel_result_hdr;
 
 /* ---- the leader's side */
 
@@ -79,22 +58,6 @@ typedef struct duel_disp {
 } duel_disp;
 
 static duel_disp *duel_disp_g = NULL;
-
-static int duel_grow(void **p, size_t *cap, size_t need, size_t elem)
-{
-    size_t c = *cap ? *cap : 64;
-    void *np;
-    if (need <= *cap)
-        return 0;
-    while (c < need)
-        c *= 2;
-    np = realloc(*p, c * elem);
-    if (np == NULL)
-        return -1;
-    *p = np;
-    *cap = c;
-    return 0;
-}
 
 static void duel_disp_reset(duel_disp *d, size_t n_games)
 {
@@ -312,8 +275,7 @@ static int duel_disp_poll(void *ud, duel_games *dg)
         for (k = 0; k < d->n_peers; k++)
             if (d->peers[k].rank == st.MPI_SOURCE)
                 pe = &d->peers[k];
-        if (pe == NULL || !pe->slot[0].busy || count < (int)sizeof h ||
-            (size_t)count != sizeof h + pe->slot[0].count) {
+        if (pe == NULL || !pe->slot[0].busy) {
             fprintf(stderr, "duel_evolve: mpi: a result of %d bytes from rank %d that no chunk asked for\n", count,
                     st.MPI_SOURCE);
             return -1;
@@ -325,9 +287,7 @@ static int duel_disp_poll(void *ud, duel_games *dg)
             return -1;
         duel_mpi_g.stats.recv_msgs++;
         duel_mpi_g.stats.recv_bytes += (uint64_t)count;
-        memcpy(&h, d->rbuf, sizeof h);
-        if (h.magic != DUEL_MPI_RESULT_MAGIC || h.batch != d->seq || h.from != pe->slot[0].from ||
-            h.count != pe->slot[0].count || (h.err && h.err_at >= h.count)) {
+        if (duel_wire_result_read(d->rbuf, (size_t)count, d->seq, pe->slot[0].from, pe->slot[0].count, &h) != 0) {
             fprintf(stderr, "duel_evolve: mpi: rank %d answered another chunk than it was sent\n", st.MPI_SOURCE);
             return -1;
         }
@@ -418,79 +378,10 @@ void duel_mpi_describe(char *out, size_t cap)
 
 /* ---- a rank's side */
 
-typedef struct duel_store {
-    uint64_t batch;
-    duel_net *nets;     /* [cap] blob NULL: not sent */
-    size_t cap;
-    uint8_t **bufs;     /* the messages the blobs point into, freed when the batch changes */
-    size_t n_bufs, bufs_cap;
-} duel_store;
-
-static void duel_store_clear(duel_store *s)
-{
-    size_t i;
-    for (i = 0; i < s->n_bufs; i++)
-        free(s->bufs[i]);
-    s->n_bufs = 0;
-    if (s->cap)
-        memset(s->nets, 0, s->cap * sizeof *s->nets);
-}
-
-/* One chunk: its networks kept (the message buffer with them), its matches in m. 0, or -1 on a malformed message. */
-static int duel_store_take(duel_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m, size_t *m_cap)
-{
-    size_t pos = sizeof *h, i;
-    if (len < sizeof *h)
-        return -1;
-    memcpy(h, buf, sizeof *h);
-    if (h->magic != DUEL_MPI_WORK_MAGIC || h->count == 0 || h->count > len || h->n_new > DUEL_MPI_MAX_NETS)
-        return -1;
-    if (h->batch != s->batch) {
-        duel_store_clear(s);
-        s->batch = h->batch;
-    }
-    for (i = 0; i < h->n_new; i++) {
-        uint32_t w[2];
-        if (len - pos < 8)
-            return -1;
-        memcpy(w, buf + pos, 8);
-        if (w[0] >= DUEL_MPI_MAX_NETS || w[1] > len - pos - 8)
-            return -1;
-        if (w[0] >= s->cap) {
-            size_t old = s->cap;
-            if (duel_grow((void **)&s->nets, &s->cap, (size_t)w[0] + 1, sizeof *s->nets) != 0)
-                return -1;
-            memset(s->nets + old, 0, (s->cap - old) * sizeof *s->nets);
-        }
-        s->nets[w[0]].blob = buf + pos + 8;
-        s->nets[w[0]].len = w[1];
-        pos += 8 + (size_t)w[1];
-    }
-    if ((len - pos) / sizeof(duel_wire_match) != h->count || (len - pos) % sizeof(duel_wire_match) != 0)
-        return -1;
-    if (duel_grow((void **)m, m_cap, h->count, sizeof **m) != 0)
-        return -1;
-    for (i = 0; i < h->count; i++) {
-        duel_wire_match w;
-        memcpy(&w, buf + pos + i * sizeof w, sizeof w);
-        if (w.a >= s->cap || w.b >= s->cap || s->nets[w.a].blob == NULL || s->nets[w.b].blob == NULL)
-            return -1;
-        (*m)[i].a = w.a;
-        (*m)[i].b = w.b;
-        (*m)[i].config = w.config;
-        (*m)[i].a_first = w.a_first;
-        (*m)[i].result = 0;
-    }
-    if (duel_grow((void **)&s->bufs, &s->bufs_cap, s->n_bufs + 1, sizeof *s->bufs) != 0)
-        return -1;
-    s->bufs[s->n_bufs++] = buf; /* the blobs live in it until the batch changes */
-    return 0;
-}
-
 int duel_mpi_games_serve(MPI_Comm comm, int leader, uint32_t threads, int *end_status)
 {
     duel_games *dg = NULL;
-    duel_store store;
+    duel_wire_store store;
     duel_match *m = NULL;
     size_t m_cap = 0;
     uint8_t *out = NULL;
@@ -519,7 +410,7 @@ int duel_mpi_games_serve(MPI_Comm comm, int leader, uint32_t threads, int *end_s
             rc = 0;
             break;
         }
-        if (st.MPI_TAG != DUEL_TAG_WORK || duel_store_take(&store, buf, len, &h, &m, &m_cap) != 0) {
+        if (st.MPI_TAG != DUEL_TAG_WORK || duel_wire_work_take(&store, buf, len, &h, &m, &m_cap) != 0) {
             fprintf(stderr, "duel_evolve: mpi: rank %d: a malformed message (tag %d, %zu bytes) from its leader\n",
                     duel_mpi_g.rank, st.MPI_TAG, len);
             free(buf);
@@ -546,9 +437,7 @@ int duel_mpi_games_serve(MPI_Comm comm, int leader, uint32_t threads, int *end_s
         if (duel_mpi_send(comm, leader, DUEL_TAG_RESULT, out, sizeof r + h.count) != 0)
             break;
     }
-    duel_store_clear(&store);
-    free(store.nets);
-    free(store.bufs);
+    duel_wire_store_free(&store);
     free(m);
     free(out);
     duel_games_free(dg);
