@@ -1,8 +1,7 @@
 /* duel_exp.c - an experiment's runs played side by side as child processes (or as tasks on the slots of an MPI job), continued after any interruption, the best-topology champion chosen, every method compared and laddered. */
-#define _GNU_SOURCE /* prctl's PR_SET_PDEATHSIG, and the POSIX calls */
+#define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,10 +11,8 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-#ifdef __linux__
-#include <sys/prctl.h>
-#endif
 
+#include "duel_child.h"
 #include "duel_ctrl.h"
 #include "duel_exp.h"
 #include "duel_files.h"
@@ -302,40 +299,6 @@ static int duel_exp_state(duel_exp_run_state *r)
     return 0;
 }
 
-/* The duel_evolve binary that is running this experiment. */
-static int duel_exp_self(char *out, size_t cap)
-{
-    ssize_t n = readlink("/proc/self/exe", out, cap - 1);
-    if (n <= 0 || (size_t)n >= cap - 1)
-        return -1;
-    out[n] = '\0';
-    return 0;
-}
-
-/* Starts `duel_evolve ARGS` in a child that dies with us (kill -9 of the experiment leaves no run holding its
- * directory's lock), its standard output to /dev/null when quiet_out. The pid, or -1. */
-static pid_t duel_exp_spawn(const char *self, char *const *args, int quiet_out)
-{
-    pid_t parent = getpid(), pid = fork();
-    if (pid != 0)
-        return pid;
-#ifdef __linux__
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-#endif
-    if (getppid() != parent)
-        _exit(127);
-    if (quiet_out) {
-        int fd = open("/dev/null", O_WRONLY);
-        if (fd >= 0) {
-            dup2(fd, STDOUT_FILENO);
-            close(fd);
-        }
-    }
-    execv(self, args);
-    fprintf(stderr, "duel_evolve: experiment: cannot start %s: %s\n", self, strerror(errno));
-    _exit(127);
-}
-
 /* The command line that plays run r from where it is: argv[0] the subcommand (run or resume), in a's buffers. */
 typedef struct duel_exp_args {
     char cfg[200], seed[16], thr[16];
@@ -377,7 +340,7 @@ static pid_t duel_exp_start_run(const char *self, const duel_plan *p, duel_exp_r
     argv[0] = (char *)"duel_evolve";
     for (i = 0; i <= a.argc; i++)
         argv[i + 1] = a.argv[i];
-    return duel_exp_spawn(self, argv, 1);
+    return duel_child_spawn(self, argv, 1);
 }
 
 static void duel_exp_hms(char *out, size_t cap, double s)
@@ -919,7 +882,7 @@ static int duel_exp_ladders(const duel_exp_sched *s, const char *self, uint32_t 
             argv[2] = (char *)s->runs[k].dir;
             argv[3] = (char *)"--top";
             argv[4] = NULL;
-            pids[k] = duel_exp_spawn(self, argv, 1);
+            pids[k] = duel_child_spawn(self, argv, 1);
             if (pids[k] < 0) {
                 pids[k] = 0;
                 failed = 1;
@@ -965,7 +928,7 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
     cores = nproc > 0 ? (uint32_t)nproc : 1;
     jobs = o->jobs ? o->jobs : cores;
     threads = o->threads ? o->threads : (cores / jobs ? cores / jobs : 1);
-    if (duel_exp_self(self, sizeof self) != 0) {
+    if (duel_child_self(self, sizeof self) != 0) {
         fprintf(stderr, "duel_evolve: experiment: cannot find this program (/proc/self/exe): %s\n", strerror(errno));
         return 1;
     }

@@ -1,7 +1,6 @@
 /* duel_mpi_exp.c - an experiment over the ranks of an MPI job: groups of ranks formed, each group's leader executing the duel_evolve command lines rank 0 hands it, its other ranks playing its runs' games. */
-#define _GNU_SOURCE /* prctl's PR_SET_PDEATHSIG, and the POSIX calls */
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
-#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,10 +8,8 @@
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#ifdef __linux__
-#include <sys/prctl.h>
-#endif
 
+#include "duel_child.h"
 #include "duel_mpi_internal.h"
 
 /*
@@ -177,41 +174,11 @@ uint32_t duel_mpi_exp_slot_ranks(uint32_t slot)
                                     : (uint32_t)((duel_mpi_g.size - 1) / duel_exp_groups);
 }
 
-/* Slot 0 on rank 0: plain duel_evolve in a child that dies with us and does not join the MPI job. */
-static pid_t duel_exp_spawn_local(char *const *argv)
-{
-    char self[4096];
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    pid_t parent = getpid(), pid;
-    if (n <= 0)
-        return -1;
-    self[n] = '\0';
-    pid = fork();
-    if (pid != 0)
-        return pid;
-#ifdef __linux__
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-#endif
-    if (getppid() != parent)
-        _exit(127);
-    {
-        int fd = open("/dev/null", O_WRONLY);
-        if (fd >= 0) {
-            dup2(fd, STDOUT_FILENO);
-            close(fd);
-        }
-    }
-    setenv("DUEL_MPI", "0", 1);
-    execv(self, argv);
-    fprintf(stderr, "duel_evolve: experiment: cannot start %s: %s\n", self, strerror(errno));
-    _exit(127);
-}
-
 int duel_mpi_exp_start(uint32_t slot, int argc, char **argv)
 {
     size_t len, pos;
     uint8_t *buf;
-    char cwd[4096];
+    char cwd[4096], self[4096];
     int i, rc;
     if (duel_exp_local && slot == 0) {
         char **full = (char **)calloc((size_t)argc + 2, sizeof *full);
@@ -220,7 +187,7 @@ int duel_mpi_exp_start(uint32_t slot, int argc, char **argv)
         full[0] = (char *)"duel_evolve";
         for (i = 0; i < argc; i++)
             full[i + 1] = argv[i];
-        duel_exp_child = duel_exp_spawn_local(full);
+        duel_exp_child = duel_child_self(self, sizeof self) == 0 ? duel_child_spawn(self, full, 1) : -1;
         free(full);
         return duel_exp_child > 0 ? 0 : -1;
     }
