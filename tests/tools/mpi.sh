@@ -141,6 +141,10 @@ bad)
   mpi_bad "runs in one process: under mpirun only run, resume and experiment" 2 "$duel" play builtin:forager builtin:hunter
   mpi_bad "5 MPI ranks for a run of 2 x 2 networks: at most 4 ranks" 5 "$duel" run --config "$cfg" --set pop_size=2 --out P
   [ ! -e P/checkpoint.bin ] || fail "a refused run wrote a checkpoint"
+  sed 's/^pop_size = 16/pop_size = 2/' plan-one.ini > plan-small.ini
+  mpi_bad "11 MPI ranks make groups of 5 ranks, more than the 2 x 2 networks of a complexify run can use" 11 \
+    "$duel" experiment plan-small.ini --out X --quiet
+  [ ! -e X/runs/complexify-1/checkpoint.bin ] || fail "a refused experiment played"
   # a rank of another build: refused before anything is played
   rc=0
   "${mpi[@]}" -np 1 "$duel" run --config "$cfg" --out S --quiet : -np 1 "$skew" > out.txt 2> err.txt || rc=$?

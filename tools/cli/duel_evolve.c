@@ -97,12 +97,12 @@ int main(int argc, char **argv)
     }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         duel_usage(argc < 2 ? stderr : stdout);
-        return duel_stdout_status("--help", argc < 2 ? 2 : 0);
+        return duel_mpi_finish(duel_stdout_status("--help", argc < 2 ? 2 : 0));
     }
     for (i = 0; i < sizeof duel_commands / sizeof duel_commands[0]; i++)
         if (strcmp(argv[1], duel_commands[i].name) == 0)
             return duel_mpi_finish(duel_stdout_status(argv[1], duel_commands[i].run(argc - 2, argv + 2)));
     fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
     duel_usage(stderr);
-    return 2;
+    return duel_mpi_finish(2);
 }

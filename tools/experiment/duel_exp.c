@@ -677,6 +677,19 @@ static int duel_exp_play_mpi(duel_exp_sched *s, uint32_t user_threads)
         fprintf(stderr, "duel_evolve: experiment: out of memory\n");
         return 1;
     }
+    for (j = 0; j < n_slots; j++)
+        for (k = 0; k < p->n_methods; k++)
+            if (duel_mpi_exp_slot_ranks(j) > 2u * p->m[k].cfg.neat.pop_size) {
+                /* the run would refuse it (duel_run.c): say so before anything starts */
+                fprintf(stderr, "duel_evolve: experiment: %u MPI ranks make groups of %u ranks, more than the 2 x %u "
+                                "networks of a %s run can use: at most %u ranks a run (docs/cluster.md)\n",
+                        duel_mpi_size(), duel_mpi_exp_slot_ranks(j), p->m[k].cfg.neat.pop_size, p->m[k].name,
+                        2u * p->m[k].cfg.neat.pop_size);
+                free(slot);
+                free(cmp_done);
+                free(lad_done);
+                return 2;
+            }
     if (!s->quiet) {
         fprintf(stderr, "experiment: %u MPI ranks as %u slot%s (", duel_mpi_size(), n_slots, n_slots == 1 ? "" : "s");
         for (j = 0; j < n_slots; j++)

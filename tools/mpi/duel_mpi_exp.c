@@ -33,6 +33,7 @@ typedef struct duel_setup {
 } duel_setup;
 
 static int duel_exp_groups = 0;   /* remote slots */
+static int duel_exp_gsize = 1;    /* ranks a group (the last one takes the ranks left over too) */
 static int duel_exp_local = 0;    /* 1: slot 0 is a child process of rank 0 */
 static pid_t duel_exp_child = 0;  /* slot 0's child while it runs */
 static int *duel_exp_leader = NULL; /* [slots] the world rank of each remote slot's leader (index 0 unused when local) */
@@ -146,6 +147,7 @@ uint32_t duel_mpi_exp_open(uint32_t runs_left)
     if (su.group_size < 1)
         su.group_size = 1;
     duel_exp_groups = n_workers / (int)su.group_size;
+    duel_exp_gsize = (int)su.group_size;
     duel_exp_local = su.group_size == 1;
     for (r = 1; r < duel_mpi_g.size; r++)
         duel_mpi_send(MPI_COMM_WORLD, r, DUEL_TAG_SETUP, &su, sizeof su);
@@ -170,8 +172,7 @@ uint32_t duel_mpi_exp_slot_ranks(uint32_t slot)
     if (duel_exp_local && slot == 0)
         return 1;
     k = (int)slot - duel_exp_local;
-    return k == duel_exp_groups - 1 ? (uint32_t)(duel_mpi_g.size - 1 - k * ((duel_mpi_g.size - 1) / duel_exp_groups))
-                                    : (uint32_t)((duel_mpi_g.size - 1) / duel_exp_groups);
+    return (uint32_t)(k == duel_exp_groups - 1 ? duel_mpi_g.size - 1 - k * duel_exp_gsize : duel_exp_gsize);
 }
 
 int duel_mpi_exp_start(uint32_t slot, int argc, char **argv)
