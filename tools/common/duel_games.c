@@ -252,8 +252,6 @@ void duel_games_remote_done(duel_games *dg, size_t count, uint64_t steps, int er
     pthread_mutex_unlock(&dg->lock);
 }
 
-/* The batch set up in dg (games or matches, n): played by the threads here and, with a remote executor, by
- * other processes too, whose share the remote function hands out and collects on this thread. */
 static double duel_games_now(void)
 {
     struct timespec ts;
@@ -261,6 +259,8 @@ static double duel_games_now(void)
     return (double)ts.tv_sec + ts.tv_nsec / 1e9;
 }
 
+/* The batch set up in dg (games or matches, n): played by the threads here and, with a remote executor, by
+ * other processes too, whose share the remote function hands out and collects on this thread. */
 static int duel_games_run(duel_games *dg, size_t n)
 {
     double t0 = duel_games_now();

@@ -657,7 +657,7 @@ static int duel_exp_has_ladder(const duel_exp_run_state *r)
  * the slots as they become free: first the reference runs' comparisons (the best-topology champion waits for
  * them), then the runs, then the other comparisons, then the ladders. The comparisons and ladders that
  * duel_exp_run does next then find everything in the caches. 0, or the exit status after one line. */
-static int duel_exp_play_mpi(duel_exp_sched *s, uint32_t user_threads)
+static int duel_exp_play_mpi(duel_exp_sched *s)
 {
     const duel_plan *p = s->p;
     uint32_t n_slots, k, j, left = 0, ref_runs_left = 0, ref_cmp_left = 0, busy = 0;
@@ -697,7 +697,6 @@ static int duel_exp_play_mpi(duel_exp_sched *s, uint32_t user_threads)
                     duel_mpi_exp_slot_ranks(j) == 1 ? "" : "s", duel_mpi_exp_slot_threads(j));
         fprintf(stderr, ")\n");
     }
-    (void)user_threads;
     for (k = 0; k < s->n_runs; k++) {
         lad_done[k] = (uint8_t)duel_exp_has_ladder(&s->runs[k]);
         if (s->runs[k].method == p->ref) {
@@ -884,11 +883,8 @@ static int duel_exp_ladders(const duel_exp_sched *s, const char *self, uint32_t 
         pid_t pid;
         uint32_t j;
         for (; k < s->n_runs && running < jobs && !duel_exp_stop && !failed; k++) {
-            char path[400];
-            struct stat st;
             char *argv[5];
-            snprintf(path, sizeof path, "%s/ladder.csv", s->runs[k].dir);
-            if (stat(path, &st) == 0)
+            if (duel_exp_has_ladder(&s->runs[k]))
                 continue;
             argv[0] = (char *)"duel_evolve";
             argv[1] = (char *)"ladder";
@@ -993,7 +989,7 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     if (duel_mpi_size() > 1)
-        rc = duel_exp_play_mpi(&s, o->threads);
+        rc = duel_exp_play_mpi(&s);
     else
         rc = duel_exp_play_runs(&s, self, jobs, threads, o->threads ? o->threads : 0);
     if (rc == 0 && !o->quiet)

@@ -22,7 +22,7 @@
 #define DUEL_MPI_SALT 0
 #endif
 
-duel_mpi_job duel_mpi_g = {0, 0, 1, NULL, 0, 0, 0, 0, 0, {0, 0, 0, 0, 0}};
+duel_mpi_job duel_mpi_g = {0, 0, 1, NULL, 0, 0, 0, 0, {0, 0, 0, 0, 0}};
 
 int duel_mpi_built(void)
 {
@@ -37,11 +37,6 @@ uint32_t duel_mpi_rank(void)
 uint32_t duel_mpi_size(void)
 {
     return (uint32_t)duel_mpi_g.size;
-}
-
-void duel_mpi_get_stats(duel_mpi_stats *s)
-{
-    *s = duel_mpi_g.stats;
 }
 
 static uint64_t duel_fnv(uint64_t h, const void *p, size_t n)
@@ -139,7 +134,6 @@ int duel_mpi_start(int argc, char **argv)
     MPI_Comm_rank(MPI_COMM_WORLD, &duel_mpi_g.rank);
     MPI_Comm_size(MPI_COMM_WORLD, &duel_mpi_g.size);
     duel_mpi_g.games_comm = MPI_COMM_WORLD;
-    duel_mpi_g.games_leader = 0;
     if (MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node) == MPI_SUCCESS) {
         MPI_Comm_size(node, &local);
         MPI_Comm_free(&node);

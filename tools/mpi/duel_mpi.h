@@ -71,10 +71,4 @@ int duel_mpi_exp_poll(uint32_t *slot, int *status);
 /* The slot's task stops after its generation in flight (as Ctrl-C would). */
 void duel_mpi_exp_interrupt(uint32_t slot);
 
-/* Counters of the messages this process sent and received for games. */
-typedef struct duel_mpi_stats {
-    uint64_t sent_msgs, sent_bytes, recv_msgs, recv_bytes, batches;
-} duel_mpi_stats;
-void duel_mpi_get_stats(duel_mpi_stats *s);
-
 #endif /* DUEL_MPI_H */

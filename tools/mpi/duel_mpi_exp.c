@@ -98,7 +98,6 @@ int duel_mpi_exp_serve(uint32_t threads, duel_mpi_command_fn cmd)
     MPI_Comm_rank(group, &grank);
     MPI_Comm_size(group, &gsize);
     duel_mpi_g.games_comm = group;
-    duel_mpi_g.games_leader = 0;
     if (grank != 0) {
         /* a member: the leader's games until its END, then rank 0's END to everybody */
         int rc = duel_mpi_games_serve(group, 0, threads, &status);

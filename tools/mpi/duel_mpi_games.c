@@ -308,6 +308,7 @@ static int duel_disp_poll(void *ud, duel_games *dg)
 void duel_mpi_attach(duel_games *dg)
 {
     duel_disp *d = duel_disp_g;
+    MPI_Group gg, gw;
     int size, me, k, n = 0;
     if (!duel_mpi_g.active)
         return;
@@ -325,21 +326,20 @@ void duel_mpi_attach(duel_games *dg)
             return;
         }
         d->comm = duel_mpi_g.games_comm;
+        /* each peer's threads, from the start-up exchange (indexed by world rank) */
+        MPI_Comm_group(d->comm, &gg);
+        MPI_Comm_group(MPI_COMM_WORLD, &gw);
         for (k = 0; k < size; k++) {
             int world;
-            MPI_Group gg, gw;
             if (k == me)
                 continue;
-            /* its threads, from the start-up exchange (indexed by world rank) */
-            MPI_Comm_group(d->comm, &gg);
-            MPI_Comm_group(MPI_COMM_WORLD, &gw);
             MPI_Group_translate_ranks(gg, 1, &k, gw, &world);
-            MPI_Group_free(&gg);
-            MPI_Group_free(&gw);
             d->peers[n].rank = k;
             d->peers[n].chunk = DUEL_MPI_CHUNK * (duel_mpi_g.peers[world].threads ? duel_mpi_g.peers[world].threads : 1);
             n++;
         }
+        MPI_Group_free(&gg);
+        MPI_Group_free(&gw);
         d->n_peers = n;
         duel_disp_g = d;
     }
@@ -358,22 +358,18 @@ uint32_t duel_mpi_games_ranks(void)
 
 void duel_mpi_describe(char *out, size_t cap)
 {
-    int size = 1, r;
-    uint32_t threads = 0;
+    int size = 1;
     if (duel_mpi_g.active)
         MPI_Comm_size(duel_mpi_g.games_comm, &size);
     if (size < 2) {
         snprintf(out, cap, "%s", "");
         return;
     }
-    for (r = 0; r < duel_mpi_g.size; r++)
-        threads += duel_mpi_g.peers[r].threads;
     snprintf(out, cap, "%d MPI ranks; games sent in %llu messages of %llu bytes, results in %llu of %llu bytes, "
                        "over %llu batches",
              size, (unsigned long long)duel_mpi_g.stats.sent_msgs, (unsigned long long)duel_mpi_g.stats.sent_bytes,
              (unsigned long long)duel_mpi_g.stats.recv_msgs, (unsigned long long)duel_mpi_g.stats.recv_bytes,
              (unsigned long long)duel_mpi_g.stats.batches);
-    (void)threads;
 }
 
 /* ---- a rank's side */

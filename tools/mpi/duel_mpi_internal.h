@@ -21,6 +21,11 @@ enum {
     DUEL_TAG_INT = 7     /* 0 -> group leader: stop the task after the generation in flight */
 };
 
+/* The messages and bytes of a run's games this process sent and received (log.txt's mpi: line). */
+typedef struct duel_mpi_stats {
+    uint64_t sent_msgs, sent_bytes, recv_msgs, recv_bytes, batches;
+} duel_mpi_stats;
+
 /* What each rank told the others at start-up. */
 typedef struct duel_mpi_peer {
     uint64_t version;   /* duel_mpi_version_word() */
@@ -34,8 +39,8 @@ typedef struct duel_mpi_job {
     int active;              /* MPI initialised */
     int rank, size;
     duel_mpi_peer *peers;    /* [size] */
-    MPI_Comm games_comm;     /* whom a run's games go to: the world, or an experiment's group */
-    int games_leader;        /* the rank (in games_comm) that hands them out */
+    MPI_Comm games_comm;     /* whom a run's games go to (rank 0 of it hands them out): the world, or an
+                              * experiment's group */
     int in_task;             /* a group leader executing rank 0's task */
     int stop_asked;          /* rank 0 sent DUEL_TAG_INT */
     int quiet_end;           /* the start-up check failed: every rank knows, nobody waits for an END */

@@ -119,8 +119,3 @@ void duel_mpi_exp_interrupt(uint32_t slot)
 {
     (void)slot;
 }
-
-void duel_mpi_get_stats(duel_mpi_stats *s)
-{
-    memset(s, 0, sizeof *s);
-}
