@@ -48,6 +48,22 @@ static int db_pair_make(db_pair *p, uint32_t n_hidden, uint32_t n_conns, neat_rn
     return err;
 }
 
+/* FNV-1a over a game's result */
+static uint64_t db_checksum(uint64_t h, const duel_result *r)
+{
+    int64_t v[6];
+    int k;
+    v[0] = r->outcome;
+    v[1] = r->steps;
+    v[2] = r->energy[0];
+    v[3] = r->energy[1];
+    v[4] = r->eaten[0];
+    v[5] = r->eaten[1];
+    for (k = 0; k < 6; k++)
+        h = (h ^ (uint64_t)v[k]) * 0x100000001B3ull;
+    return h;
+}
+
 /* games on every configuration and side until min_seconds have passed */
 static double db_steps_per_second(db_pair *p, double min_seconds, uint64_t *steps_out)
 {
@@ -72,16 +88,18 @@ int main(int argc, char **argv)
     uint64_t steps39, steps202;
     double sps39, sps202, t0, cmp_s;
     duel_tally tally;
-    int callgrind_games = 0, i, rc = 0;
+    int callgrind_games = 0, callgrind_conns = 39, i, rc = 0;
     const char *blob_dir = NULL;
 
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--callgrind") == 0 && i + 1 < argc) {
             callgrind_games = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--conns") == 0 && i + 1 < argc) {
+            callgrind_conns = atoi(argv[++i]);
         } else if (strcmp(argv[i], "--write-blobs") == 0 && i + 1 < argc) {
             blob_dir = argv[++i];
         } else {
-            fprintf(stderr, "usage: duel_bench [--callgrind GAMES] [--write-blobs DIR]\n");
+            fprintf(stderr, "usage: duel_bench [--callgrind GAMES [--conns 39|202]] [--write-blobs DIR]\n");
             return 2;
         }
     }
@@ -111,13 +129,22 @@ int main(int argc, char **argv)
         /* fixed work, nothing timed: under valgrind --tool=callgrind, the
          * instructions of duel_play divided by the robot-steps printed here
          * give instructions per robot-step (sensing + network + motion) */
-        uint64_t robot_steps = 0;
+        uint64_t robot_steps = 0, sum = 0xCBF29CE484222325ull;
+        db_pair *p = callgrind_conns == 202 ? &p202 : &p39;
+        if (callgrind_conns != 39 && callgrind_conns != 202) {
+            fprintf(stderr, "duel_bench: --conns is 39 or 202\n");
+            rc = 2;
+            goto done;
+        }
         for (i = 0; i < callgrind_games; i++) {
             duel_result r;
-            duel_play(&p39.c[i & 1], &p39.c[(i + 1) & 1], (i / 2) % DUEL_CONFIGS, &r, NULL, NULL);
+            duel_play(&p->c[i & 1], &p->c[(i + 1) & 1], (i / 2) % DUEL_CONFIGS, &r, NULL, NULL);
             robot_steps += 2u * r.steps;
+            sum = db_checksum(sum, &r);
         }
-        printf("{\"games\":%d,\"robot_steps\":%llu}\n", callgrind_games, (unsigned long long)robot_steps);
+        /* the checksum of every game's result: the same for every build of the same spec */
+        printf("{\"games\":%d,\"conns\":%d,\"robot_steps\":%llu,\"checksum\":\"%016llx\"}\n", callgrind_games,
+               callgrind_conns, (unsigned long long)robot_steps, (unsigned long long)sum);
         goto done;
     }
     sps39 = db_steps_per_second(&p39, 1.0, &steps39);
