@@ -4,12 +4,19 @@
 
 #include "duel.h"
 
+/* The rounding below shifts negative values right: that is implementation
+ * defined in C99, arithmetic (floor) on every compiler this builds with; a
+ * compiler that did otherwise stops the build here. */
+typedef char duel_arithmetic_shift_check[(-9 >> 1) == -5 ? 1 : -1];
+
 /* x / 2^shift rounded to nearest, halves away from zero: the same for x and
- * -x, so mirror-image games stay mirror images */
+ * -x, so mirror-image games stay mirror images. Without a branch: for x < 0,
+ * -floor((-x + h) / 2h) = floor((x + h - 1) / 2h) (h = 2^(shift-1)), so
+ * both signs are one add and one floor shift. */
 static inline int64_t duel_round_shift(int64_t x, int shift)
 {
     int64_t half = (int64_t)1 << (shift - 1);
-    return x >= 0 ? (x + half) >> shift : -((-x + half) >> shift);
+    return (x + half - (x < 0)) >> shift;
 }
 
 /* squared distance between two Q16.16 points, Q32 */
@@ -17,6 +24,41 @@ static inline int64_t duel_dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
     int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
     return dx * dx + dy * dy;
+}
+
+/* duel_sin_q[i] = round(2^30 sin(i pi / 2048)), i = 0..1024, and entry 1025
+ * = entry 1024 (duel_trig.c) */
+extern const int32_t duel_sin_q[1026];
+
+#define DUEL_QUARTER 0x40000000u
+
+/* sin of p in [0, pi/2] (p a binary angle below 2^30, or exactly 2^30), Q30:
+ * linear interpolation between table entries on 20 fraction bits. */
+static inline int32_t duel_sin_quarter(uint32_t p)
+{
+    uint32_t i = p >> 20, frac = p & 0xFFFFFu;
+    int64_t lo, hi;
+    lo = duel_sin_q[i];
+    hi = duel_sin_q[i + 1];
+    /* rounding to nearest; hi >= lo, so the product is non-negative */
+    return (int32_t)(lo + (((hi - lo) * (int64_t)frac + (1 << 19)) >> 20));
+}
+
+/* duel_cossin (duel.h), inline: sensing and motion take one each per robot
+ * and step. */
+static inline void duel_cossin_q30(duel_angle a, int32_t *c, int32_t *s)
+{
+    /* fold into the first quadrant: every other quadrant is a sign change
+     * and/or sin <-> cos swap of the same two values, so the symmetries of
+     * the real functions hold exactly */
+    uint32_t q = a >> 30, p = a & (DUEL_QUARTER - 1u);
+    int32_t sp = duel_sin_quarter(p), cp = duel_sin_quarter(DUEL_QUARTER - p);
+    switch (q) {
+    case 0: *c = cp; *s = sp; break;
+    case 1: *c = -sp; *s = cp; break;
+    case 2: *c = -cp; *s = -sp; break;
+    default: *c = sp; *s = -cp; break;
+    }
 }
 
 /* duel_sqrt_est[j] = ceil(sqrt((64 + j) 2^24)), j = 0..192 (duel_trig.c) */
@@ -80,5 +122,9 @@ static inline uint32_t duel_isqrt32(uint32_t x)
         r--;
     return r;
 }
+
+/* Both robots' 13 inputs, as duel_sense gives them, sharing what the two
+ * have in common (duel_sense.c): what duel_play calls. */
+void duel_sense_pair(const duel_world *w, nrt_q15 west[DUEL_N_INPUTS], nrt_q15 east[DUEL_N_INPUTS]);
 
 #endif /* DUEL_INTERNAL_H */

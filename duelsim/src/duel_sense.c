@@ -42,6 +42,21 @@ static inline int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const
     return bx[3] * vy < by[3] * vx ? 3 : (bx[4] * vy < by[4] * vx ? 4 : 0);
 }
 
+/* Index of the lowest set bit of a non-zero mask: the processor's instruction
+ * where it has one (the same condition as duel_even_clz), else a de Bruijn
+ * multiply; both give the same index. */
+static inline unsigned duel_lowest_bit(uint32_t m)
+{
+#if (defined(__GNUC__) || defined(__clang__)) && \
+    (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
+    return (unsigned)__builtin_ctz(m);
+#else
+    static const uint8_t debruijn[32] = {0,  1,  28, 2,  29, 14, 24, 3, 30, 22, 20, 15, 25, 17, 4,  8,
+                                         31, 27, 13, 23, 21, 19, 16, 7, 26, 12, 18, 6,  11, 5,  10, 9};
+    return debruijn[((m & (0u - m)) * 0x077CB531u) >> 27];
+#endif
+}
+
 /* Nearest squared distance per sector, minus one, into near[5] (UINT64_MAX:
  * none) over the items whose mask bit is set. Minus one, as unsigned: an
  * object at the robot's very centre (d2 = 0) has no bearing and must give no
@@ -51,88 +66,128 @@ static inline int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const
  * of it) to boundary k (exclusive); v is clockwise of boundary k when
  * cross(b_k, v) < 0. Two or three 64-bit cross products per object (Q16.16 x
  * Q30 < 2^57), no trigonometry (duel_sector). The boundaries come widened to
- * 64 bits and the robot's position is read once: this loop is the
- * simulator's hot spot. */
+ * 64 bits, the robot's position is read once and only the items still on
+ * the board are visited: this loop is the simulator's hot spot. */
 static void duel_scan(int32_t rx, int32_t ry, const int32_t *ox, const int32_t *oy, uint32_t mask,
                       const int64_t bx[5], const int64_t by[5], uint64_t near[5])
 {
-    uint32_t i;
     int k;
     for (k = 0; k < 5; k++)
         near[k] = UINT64_MAX;
-    for (i = 0; mask != 0; i++, mask >>= 1) {
-        int64_t vx, vy;
-        uint64_t d2m1;
-        if (!(mask & 1u))
-            continue;
-        vx = (int64_t)ox[i] - rx;
-        vy = (int64_t)oy[i] - ry;
-        d2m1 = (uint64_t)(vx * vx + vy * vy) - 1u;
+    for (; mask != 0; mask &= mask - 1u) {
+        unsigned i = duel_lowest_bit(mask);
+        int64_t vx = (int64_t)ox[i] - rx, vy = (int64_t)oy[i] - ry;
+        uint64_t d2m1 = (uint64_t)(vx * vx + vy * vy) - 1u;
         k = duel_sector(vx, vy, bx, by);
         if (d2m1 < near[k])
             near[k] = d2m1;
     }
 }
 
-/* distance along the heading to the first board edge, Q16.16 */
-static int64_t duel_wall_distance(const duel_robot *r, int32_t c, int32_t s)
+/* The wall input, max(0, 1 - d / 200), d the distance along the heading to
+ * the first board edge. */
+static nrt_q15 duel_wall_reading(const duel_robot *r, int32_t c, int32_t s)
 {
-    /* (edge - x) / cos with cos in Q30: multiply (not shift: the left shift
-     * of a negative value is undefined) */
-    const int64_t q30 = (int64_t)1 << 30;
-    int64_t t = INT64_MAX, u = INT64_MAX;
-    if (c > 0)
-        t = ((int64_t)DUEL_FIX(DUEL_BOARD) - r->x) * q30 / c;
-    else if (c < 0)
-        t = -(int64_t)r->x * q30 / c;
-    if (s > 0)
-        u = ((int64_t)DUEL_FIX(DUEL_BOARD) - r->y) * q30 / s;
-    else if (s < 0)
-        u = -(int64_t)r->y * q30 / s;
-    return u < t ? u : t;
+    /* d = (edge - x) / cos with cos in Q30: multiply (not shift: the left
+     * shift of a negative value is undefined). Only a distance below 200
+     * gives a reading, and d >= edge - x (|cos| <= 1): an edge 200 or more
+     * away on its axis needs no division. */
+    const int64_t q30 = (int64_t)1 << 30, far = DUEL_FIX(200);
+    int64_t t = far, u = far, ex, ey;
+    ex = c > 0 ? (int64_t)DUEL_FIX(DUEL_BOARD) - r->x : r->x;
+    ey = s > 0 ? (int64_t)DUEL_FIX(DUEL_BOARD) - r->y : r->y;
+    if (c != 0 && ex < far)
+        t = ex * q30 / (c > 0 ? c : -c);
+    if (s != 0 && ey < far)
+        u = ey * q30 / (s > 0 ? s : -s);
+    if (u < t)
+        t = u;
+    return t >= far ? 0 : duel_range_value((uint32_t)t, 400);
+}
+
+/* The robot's frame for its sensors: boundary k (k = 0..4) of the
+ * rangefinder sectors as Q30 vectors, and its heading's cos and sin. */
+typedef struct duel_frame {
+    int64_t bx[5], by[5];
+    int32_t c, s;
+} duel_frame;
+
+static void duel_frame_of(const duel_robot *me, duel_frame *f)
+{
+    int k;
+    duel_cossin_q30(me->heading, &f->c, &f->s);
+    /* boundaries k and 4-k are the heading rotated by +-(2k+1) 36 degrees:
+     * the same four products serve both; boundary 2 is -heading exactly */
+    for (k = 0; k < 2; k++) {
+        int64_t cc = (int64_t)f->c * duel_bcos[k], ss = (int64_t)f->s * duel_bsin[k];
+        int64_t cs = (int64_t)f->c * duel_bsin[k], sc = (int64_t)f->s * duel_bcos[k];
+        f->bx[k] = duel_round_shift(cc - ss, 30);
+        f->by[k] = duel_round_shift(cs + sc, 30);
+        f->bx[4 - k] = duel_round_shift(cc + ss, 30);
+        f->by[4 - k] = duel_round_shift(sc - cs, 30);
+    }
+    f->bx[2] = -f->c;
+    f->by[2] = -f->s;
+}
+
+/* Inputs 0-5 and 12: bias, food rangefinders (1 - d / 850), wall. */
+static void duel_sense_world(const duel_world *w, const duel_robot *me, const duel_frame *f,
+                             nrt_q15 in[DUEL_N_INPUTS])
+{
+    uint64_t near[5];
+    int k;
+    in[0] = NRT_ONE;
+    duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), f->bx, f->by, near);
+    for (k = 0; k < 5; k++)
+        in[1 + k] = near[k] == UINT64_MAX ? 0 : duel_range_reading((int64_t)(near[k] + 1u));
+    in[12] = duel_wall_reading(me, f->c, f->s);
+}
+
+/* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units
+ * per Q15 step; symmetric rounding and a symmetric clamp, so the two robots
+ * read exact opposites */
+static nrt_q15 duel_energy_reading(int32_t self, int32_t other)
+{
+    int64_t diff = (int64_t)self - other;
+    diff = diff >= 0 ? (diff + 200) / 400 : -((-diff + 200) / 400);
+    return (nrt_q15)(diff > 32767 ? 32767 : (diff < -32767 ? -32767 : diff));
 }
 
 void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
 {
     const duel_robot *me = &w->robot[side], *other = &w->robot[side ^ 1];
-    int64_t bx[5], by[5]; /* Q30 unit vectors, widened once for the products */
-    int32_t c, s;
-    uint64_t near[5];
-    int64_t diff, wall;
-    int k;
+    duel_frame f;
+    int64_t vx = (int64_t)other->x - me->x, vy = (int64_t)other->y - me->y, d2 = vx * vx + vy * vy;
 
-    duel_cossin(me->heading, &c, &s);
-    /* boundaries k and 4-k are the heading rotated by +-(2k+1) 36 degrees:
-     * the same four products serve both; boundary 2 is -heading exactly */
-    for (k = 0; k < 2; k++) {
-        int64_t cc = (int64_t)c * duel_bcos[k], ss = (int64_t)s * duel_bsin[k];
-        int64_t cs = (int64_t)c * duel_bsin[k], sc = (int64_t)s * duel_bcos[k];
-        bx[k] = duel_round_shift(cc - ss, 30);
-        by[k] = duel_round_shift(cs + sc, 30);
-        bx[4 - k] = duel_round_shift(cc + ss, 30);
-        by[4 - k] = duel_round_shift(sc - cs, 30);
-    }
-    bx[2] = -c;
-    by[2] = -s;
-    in[0] = NRT_ONE;
-    /* food rangefinders 1-5: 1 - d / 850 */
-    duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), bx, by, near);
-    for (k = 0; k < 5; k++)
-        in[1 + k] = near[k] == UINT64_MAX ? 0 : duel_range_reading((int64_t)(near[k] + 1u));
+    duel_frame_of(me, &f);
+    duel_sense_world(w, me, &f, in);
     /* robot rangefinders 6-10: one object, one sector */
     in[6] = in[7] = in[8] = in[9] = in[10] = 0;
-    {
-        int64_t vx = (int64_t)other->x - me->x, vy = (int64_t)other->y - me->y;
-        int64_t d2 = vx * vx + vy * vy;
-        if (d2 != 0)
-            in[6 + duel_sector(vx, vy, bx, by)] = duel_range_reading(d2);
+    if (d2 != 0)
+        in[6 + duel_sector(vx, vy, f.bx, f.by)] = duel_range_reading(d2);
+    in[11] = duel_energy_reading(me->energy, other->energy);
+}
+
+void duel_sense_pair(const duel_world *w, nrt_q15 west[DUEL_N_INPUTS], nrt_q15 east[DUEL_N_INPUTS])
+{
+    /* what duel_sense gives each robot, with what the two share computed
+     * once: the distance between them (each sees the other at -v) and the
+     * energy difference (exact opposites) */
+    const duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
+    duel_frame fa, fb;
+    int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy;
+
+    duel_frame_of(a, &fa);
+    duel_frame_of(b, &fb);
+    duel_sense_world(w, a, &fa, west);
+    duel_sense_world(w, b, &fb, east);
+    west[6] = west[7] = west[8] = west[9] = west[10] = 0;
+    east[6] = east[7] = east[8] = east[9] = east[10] = 0;
+    if (d2 != 0) {
+        nrt_q15 r = duel_range_reading(d2);
+        west[6 + duel_sector(vx, vy, fa.bx, fa.by)] = r;
+        east[6 + duel_sector(-vx, -vy, fb.bx, fb.by)] = r;
     }
-    /* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units per Q15 step;
-     * symmetric rounding and a symmetric clamp, so the two robots read exact opposites */
-    diff = (int64_t)me->energy - other->energy;
-    diff = diff >= 0 ? (diff + 200) / 400 : -((-diff + 200) / 400);
-    in[11] = (nrt_q15)(diff > 32767 ? 32767 : (diff < -32767 ? -32767 : diff));
-    /* 12: wall, max(0, 1 - d / 200); 200 * 65536 / 32768 = 400 */
-    wall = duel_wall_distance(me, c, s);
-    in[12] = wall >= (int64_t)DUEL_FIX(200) ? 0 : duel_range_value((uint32_t)wall, 400);
+    west[11] = duel_energy_reading(a->energy, b->energy);
+    east[11] = (nrt_q15)-west[11];
 }

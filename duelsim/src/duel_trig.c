@@ -4,7 +4,7 @@
 /* DUEL_SIN_Q[i] = round(2^30 sin(i pi / 2048)), i = 0..1024: a quarter wave
  * (tests/duelsim/test_trig.c recomputes every entry); entry 1025 repeats
  * entry 1024 so that the end of the range needs no test. */
-static const int32_t duel_sin_q[1026] = {
+const int32_t duel_sin_q[1026] = {
     0, 1647099, 3294193, 4941281, 6588356, 8235416, 9882456, 11529474,
     13176464, 14823423, 16470347, 18117233, 19764076, 21410872, 23057618, 24704310,
     26350943, 27997515, 29644021, 31290457, 32936819, 34583104, 36229307, 37875426,
@@ -137,33 +137,9 @@ static const int32_t duel_sin_q[1026] = {
     1073741824, /* sin(pi/2) again: p = 2^30 interpolates between 1024 and 1025 with no test */
 };
 
-#define DUEL_QUARTER 0x40000000u
-
-/* sin of p in [0, pi/2] (p a binary angle below 2^30, or exactly 2^30), Q30:
- * linear interpolation between table entries on 20 fraction bits. */
-static int32_t duel_sin_quarter(uint32_t p)
-{
-    uint32_t i = p >> 20, frac = p & 0xFFFFFu;
-    int64_t lo, hi;
-    lo = duel_sin_q[i];
-    hi = duel_sin_q[i + 1];
-    /* rounding to nearest; hi >= lo, so the product is non-negative */
-    return (int32_t)(lo + (((hi - lo) * (int64_t)frac + (1 << 19)) >> 20));
-}
-
 void duel_cossin(duel_angle a, int32_t *c, int32_t *s)
 {
-    /* fold into the first quadrant: every other quadrant is a sign change
-     * and/or sin <-> cos swap of the same two values, so the symmetries of
-     * the real functions hold exactly */
-    uint32_t q = a >> 30, p = a & (DUEL_QUARTER - 1u);
-    int32_t sp = duel_sin_quarter(p), cp = duel_sin_quarter(DUEL_QUARTER - p);
-    switch (q) {
-    case 0: *c = cp; *s = sp; break;
-    case 1: *c = -sp; *s = cp; break;
-    case 2: *c = -cp; *s = -sp; break;
-    default: *c = sp; *s = -cp; break;
-    }
+    duel_cossin_q30(a, c, s);
 }
 
 uint32_t duel_isqrt64(uint64_t x)

@@ -71,7 +71,7 @@ static void duel_move(duel_robot *r, const nrt_q15 out[DUEL_N_OUTPUTS])
     int32_t turn_cost = (24 * ad + 25) / 50;
     int32_t c, s;
     r->heading += (uint32_t)half;
-    duel_cossin(r->heading, &c, &s);
+    duel_cossin_q30(r->heading, &c, &s);
     r->x = duel_clamp_coord((int64_t)r->x + duel_round_shift((int64_t)dist * c, 30));
     r->y = duel_clamp_coord((int64_t)r->y + duel_round_shift((int64_t)dist * s, 30));
     r->heading += (uint32_t)half;

@@ -3,6 +3,21 @@
 
 #include "nrt_internal.h"
 
+/* Connections k and k + 1 of a node: their products w * a as one 64-bit
+ * term. On a 64-bit processor each product is widened (a 64-bit multiply
+ * costs what a 32-bit one does); elsewhere the pair is summed in 32 bits
+ * first, which cannot overflow: |w| <= 32767 (the loader refuses -32768)
+ * and |a| <= 32768 keep each product at most 2^30 - 2^15, so one widening
+ * (on Armv6-M a sign extension and a 64-bit add) serves two connections.
+ * Either way the sum of the node is the same exact integer. */
+#if UINTPTR_MAX > 0xFFFFFFFFu
+#define NRT_PAIR(w, src, a, k) \
+    ((int64_t)(w)[k] * (a)[(src)[k]] + (int64_t)(w)[(k) + 1u] * (a)[(src)[(k) + 1u]])
+#else
+#define NRT_PAIR(w, src, a, k) \
+    ((int64_t)((int32_t)(w)[k] * (a)[(src)[k]] + (int32_t)(w)[(k) + 1u] * (a)[(src)[(k) + 1u]]))
+#endif
+
 void nrt_reset(nrt_net *net)
 {
     memset(net->act[0], 0, 2u * net->n_nodes);
@@ -27,6 +42,7 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
     const nrt_w12 *w = net->weight;
     const uint16_t *src = net->src, *end = net->end;
     uint32_t j, non_in = (uint32_t)net->n_nodes - net->n_inputs;
+    size_t k = 0; /* size_t: k + 1 can fold into an address */
 
     /* The inputs are part of the state this step reads (already there when
      * the caller wrote them through nrt_inputs). */
@@ -34,20 +50,23 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
         memcpy(prev, inputs, 2u * net->n_inputs);
     for (j = 0; j < non_in; j++) {
         /* Q3.12 x Q1.15 = Q27 products (< 2^30); 64 bits hold the sum of the
-         * at most 65535 connections a blob can give one node (< 2^46). Two
-         * products at a time in 32 bits: |w| <= 32767 (the loader refuses
-         * -32768) and |a| <= 32768 keep each below 2^30 - 2^15, so a pair
-         * cannot overflow. Four connections per round keeps the loop
-         * overhead off the products. */
+         * at most 65535 connections a blob can give one node (< 2^46). The
+         * sum is exact, so the order and grouping of its terms are free:
+         * NRT_PRODUCT chooses them for the processor. One index k runs
+         * through both connection arrays, four connections a round, then
+         * the last two and the last one. */
+        size_t e = end[j];
         int64_t sum = 0;
-        const nrt_w12 *we = net->weight + end[j];
-        for (; we - w >= 4; w += 4, src += 4) {
-            int32_t p = (int32_t)w[0] * prev[src[0]] + (int32_t)w[1] * prev[src[1]];
-            int32_t q = (int32_t)w[2] * prev[src[2]] + (int32_t)w[3] * prev[src[3]];
-            sum += (int64_t)p + q;
+        for (; k + 4u <= e; k += 4u)
+            sum += NRT_PAIR(w, src, prev, k) + NRT_PAIR(w, src, prev, k + 2u);
+        if (k + 2u <= e) {
+            sum += NRT_PAIR(w, src, prev, k);
+            k += 2u;
         }
-        for (; w < we; w++, src++)
-            sum += (int32_t)w[0] * prev[src[0]];
+        if (k < e) {
+            sum += (int32_t)w[k] * prev[src[k]];
+            k++;
+        }
         next[j] = nrt_sig_eval(sum);
     }
     net->cur ^= 1u;
