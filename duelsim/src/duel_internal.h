@@ -96,6 +96,21 @@ static inline unsigned duel_even_clz(uint32_t y)
 #endif
 }
 
+/* Index of the lowest set bit of a non-zero mask: the processor's instruction
+ * where it has one (the same condition as duel_even_clz), else a de Bruijn
+ * multiply; both give the same index. */
+static inline unsigned duel_lowest_bit(uint32_t m)
+{
+#if (defined(__GNUC__) || defined(__clang__)) && \
+    (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
+    return (unsigned)__builtin_ctz(m);
+#else
+    static const uint8_t debruijn[32] = {0,  1,  28, 2,  29, 14, 24, 3, 30, 22, 20, 15, 25, 17, 4,  8,
+                                         31, 27, 13, 23, 21, 19, 16, 7, 26, 12, 18, 6,  11, 5,  10, 9};
+    return debruijn[((m & (0u - m)) * 0x077CB531u) >> 27];
+#endif
+}
+
 static inline uint32_t duel_isqrt32(uint32_t x)
 {
     /* Normalise to [2^30, 2^32) by an even shift, interpolate the table
@@ -122,9 +137,5 @@ static inline uint32_t duel_isqrt32(uint32_t x)
         r--;
     return r;
 }
-
-/* Both robots' 13 inputs, as duel_sense gives them, sharing what the two
- * have in common (duel_sense.c): what duel_play calls. */
-void duel_sense_pair(const duel_world *w, nrt_q15 west[DUEL_N_INPUTS], nrt_q15 east[DUEL_N_INPUTS]);
 
 #endif /* DUEL_INTERNAL_H */

@@ -1,7 +1,7 @@
 /* duel_match.c - one game between two controllers, and the 288-game comparison of spec v1. */
 #include <string.h>
 
-#include "duel_internal.h"
+#include "duel.h"
 
 /* The controller's outputs for in: a network's in place (no copy), a
  * builtin's in buf. */
@@ -49,10 +49,12 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         nrt_reset(east->net);
     while (w.outcome == DUEL_RUNNING) {
         /* 1. both sense the state at t; 2. both networks propagate once */
-        /* a network's sensors go straight into its input slots */
-        in[DUEL_WEST] = west->net != NULL ? nrt_inputs(west->net) : in_buf[DUEL_WEST];
-        in[DUEL_EAST] = east->net != NULL ? nrt_inputs(east->net) : in_buf[DUEL_EAST];
-        duel_sense_pair(&w, in[DUEL_WEST], in[DUEL_EAST]);
+        for (side = 0; side < 2; side++) {
+            /* a network's sensors go straight into its input slots */
+            duel_controller *c = side == DUEL_WEST ? west : east;
+            in[side] = c->net != NULL ? nrt_inputs(c->net) : in_buf[side];
+            duel_sense(&w, side, in[side]);
+        }
         out[DUEL_WEST] = duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
         out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
         if (trace != NULL)

@@ -42,21 +42,6 @@ static inline int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const
     return bx[3] * vy < by[3] * vx ? 3 : (bx[4] * vy < by[4] * vx ? 4 : 0);
 }
 
-/* Index of the lowest set bit of a non-zero mask: the processor's instruction
- * where it has one (the same condition as duel_even_clz), else a de Bruijn
- * multiply; both give the same index. */
-static inline unsigned duel_lowest_bit(uint32_t m)
-{
-#if (defined(__GNUC__) || defined(__clang__)) && \
-    (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
-    return (unsigned)__builtin_ctz(m);
-#else
-    static const uint8_t debruijn[32] = {0,  1,  28, 2,  29, 14, 24, 3, 30, 22, 20, 15, 25, 17, 4,  8,
-                                         31, 27, 13, 23, 21, 19, 16, 7, 26, 12, 18, 6,  11, 5,  10, 9};
-    return debruijn[((m & (0u - m)) * 0x077CB531u) >> 27];
-#endif
-}
-
 /* Nearest squared distance per sector, minus one, into near[5] (UINT64_MAX:
  * none) over the items whose mask bit is set. Minus one, as unsigned: an
  * object at the robot's very centre (d2 = 0) has no bearing and must give no
@@ -130,19 +115,6 @@ static void duel_frame_of(const duel_robot *me, duel_frame *f)
     f->by[2] = -f->s;
 }
 
-/* Inputs 0-5 and 12: bias, food rangefinders (1 - d / 850), wall. */
-static void duel_sense_world(const duel_world *w, const duel_robot *me, const duel_frame *f,
-                             nrt_q15 in[DUEL_N_INPUTS])
-{
-    uint64_t near[5];
-    int k;
-    in[0] = NRT_ONE;
-    duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), f->bx, f->by, near);
-    for (k = 0; k < 5; k++)
-        in[1 + k] = near[k] == UINT64_MAX ? 0 : duel_range_reading((int64_t)(near[k] + 1u));
-    in[12] = duel_wall_reading(me, f->c, f->s);
-}
-
 /* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units
  * per Q15 step; symmetric rounding and a symmetric clamp, so the two robots
  * read exact opposites */
@@ -156,38 +128,21 @@ static nrt_q15 duel_energy_reading(int32_t self, int32_t other)
 void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
 {
     const duel_robot *me = &w->robot[side], *other = &w->robot[side ^ 1];
-    duel_frame f;
     int64_t vx = (int64_t)other->x - me->x, vy = (int64_t)other->y - me->y, d2 = vx * vx + vy * vy;
+    duel_frame f;
+    uint64_t near[5];
+    int k;
 
     duel_frame_of(me, &f);
-    duel_sense_world(w, me, &f, in);
+    in[0] = NRT_ONE;
+    /* food rangefinders 1-5: 1 - d / 850 */
+    duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), f.bx, f.by, near);
+    for (k = 0; k < 5; k++)
+        in[1 + k] = near[k] == UINT64_MAX ? 0 : duel_range_reading((int64_t)(near[k] + 1u));
     /* robot rangefinders 6-10: one object, one sector */
     in[6] = in[7] = in[8] = in[9] = in[10] = 0;
     if (d2 != 0)
         in[6 + duel_sector(vx, vy, f.bx, f.by)] = duel_range_reading(d2);
     in[11] = duel_energy_reading(me->energy, other->energy);
-}
-
-void duel_sense_pair(const duel_world *w, nrt_q15 west[DUEL_N_INPUTS], nrt_q15 east[DUEL_N_INPUTS])
-{
-    /* what duel_sense gives each robot, with what the two share computed
-     * once: the distance between them (each sees the other at -v) and the
-     * energy difference (exact opposites) */
-    const duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
-    duel_frame fa, fb;
-    int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy;
-
-    duel_frame_of(a, &fa);
-    duel_frame_of(b, &fb);
-    duel_sense_world(w, a, &fa, west);
-    duel_sense_world(w, b, &fb, east);
-    west[6] = west[7] = west[8] = west[9] = west[10] = 0;
-    east[6] = east[7] = east[8] = east[9] = east[10] = 0;
-    if (d2 != 0) {
-        nrt_q15 r = duel_range_reading(d2);
-        west[6 + duel_sector(vx, vy, fa.bx, fa.by)] = r;
-        east[6 + duel_sector(-vx, -vy, fb.bx, fb.by)] = r;
-    }
-    west[11] = duel_energy_reading(a->energy, b->energy);
-    east[11] = (nrt_q15)-west[11];
+    in[12] = duel_wall_reading(me, f.c, f.s);
 }

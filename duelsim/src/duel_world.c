@@ -93,7 +93,8 @@ int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const
     static const int64_t hit2 = (int64_t)DUEL_COLLIDE_DIST * DUEL_COLLIDE_DIST << 32;
     duel_event local;
     duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
-    uint32_t i;
+    uint32_t left;
+    unsigned i;
 
     if (ev == NULL)
         ev = &local;
@@ -106,11 +107,10 @@ int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const
     duel_move(a, out_west);
     duel_move(b, out_east);
     /* 4. food: below 15 eats; both: the nearer; an exact tie shares */
-    for (i = 0; i < w->n_food; i++) {
+    for (left = w->food_mask & ((1u << w->n_food) - 1u); left != 0; left &= left - 1u) {
         int64_t da, db;
         int ea, eb;
-        if (!((w->food_mask >> i) & 1u))
-            continue;
+        i = duel_lowest_bit(left);
         /* most items are far from both robots: a box test spares the products */
         if (!duel_near(a, w->food_x[i], w->food_y[i]) && !duel_near(b, w->food_x[i], w->food_y[i]))
             continue;
