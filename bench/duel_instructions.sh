@@ -22,9 +22,10 @@ for conns in 39 202; do
         n = $1; gsub(",", "", n); n += 0
         if (n > v[name]) v[name] = n
     }
-    { take("duel_play"); take("duel_sense"); take("nrt_step"); take("duel_move") }
+    { take("duel_play"); take("duel_sense"); take("duel_sense_both"); take("nrt_step"); take("duel_move") }
     END {
-        play = v["duel_play"]; sense = v["duel_sense"]; net = v["nrt_step"]; move = v["duel_move"]
+        # with AVX2 duel_play senses both robots with duel_sense_both, else duel_sense twice
+        play = v["duel_play"]; sense = v["duel_sense_both"] ? v["duel_sense_both"] : v["duel_sense"]; net = v["nrt_step"]; move = v["duel_move"]
         if (!play || !sense || !net || !move) { print "duel_instructions: a function is missing from the profile" > "/dev/stderr"; exit 1 }
         core = sense + net + move
         printf "%d-connection networks: %d robot-steps, results checksum %s\n", conns, steps, sum

@@ -138,4 +138,34 @@ static inline uint32_t duel_isqrt32(uint32_t x)
     return r;
 }
 
+/* ---- the AVX2 sensing (duel_sense_avx2.c) ---- */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#define DUEL_HAVE_AVX2 1
+#else
+#define DUEL_HAVE_AVX2 0
+#endif
+
+/* The food still on the board in the lanes duel_sense_both reads: item
+ * pairs (i, j) as (x_i, x_i, x_j, x_j), the same for y. The food does not
+ * move, so duel_play keeps one per game; it remakes itself when the food
+ * mask it was made for changes (an item eaten). */
+typedef struct duel_lanes {
+    uint32_t mask;  /* the food_mask it holds, or ~0: not made yet */
+    uint32_t pairs;
+#if DUEL_HAVE_AVX2
+    int64_t x[(DUEL_MAX_FOOD + 1) / 2][4], y[(DUEL_MAX_FOOD + 1) / 2][4];
+#endif
+} duel_lanes;
+
+/* Both robots' inputs, exactly as duel_sense gives them, with AVX2: 0, or
+ * -1 when this build or processor has no AVX2 path (then duel_sense twice).
+ * lanes starts with mask ~0u. */
+int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
+                    nrt_q15 east[DUEL_N_INPUTS]);
+/* 1 when duel_sense_both senses (AVX2 built, present and allowed) */
+int duel_simd_active(void);
+/* For tests and benchmarks: 0 makes duel_play use the scalar duel_sense only
+ * (before any game starts: it is not synchronised). */
+void duel_simd_allow(int allow);
+
 #endif /* DUEL_INTERNAL_H */

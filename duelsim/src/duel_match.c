@@ -1,7 +1,7 @@
 /* duel_match.c - one game between two controllers, and the 288-game comparison of spec v1. */
 #include <string.h>
 
-#include "duel.h"
+#include "duel_internal.h"
 
 /* The controller's outputs for in: a network's in place (no copy), a
  * builtin's in buf. */
@@ -31,6 +31,7 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     nrt_q15 in_buf[2][DUEL_N_INPUTS], out_buf[2][DUEL_N_OUTPUTS], *in[2];
     const nrt_q15 *out[2];
     duel_event ev;
+    duel_lanes lanes;
     int err, side;
 
     if (res == NULL || west == NULL || east == NULL)
@@ -43,18 +44,19 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     err = duel_world_init(&w, food_config);
     if (err)
         return err;
+    lanes.mask = ~0u;
     if (west->net != NULL)
         nrt_reset(west->net);
     if (east->net != NULL)
         nrt_reset(east->net);
     while (w.outcome == DUEL_RUNNING) {
         /* 1. both sense the state at t; 2. both networks propagate once */
-        for (side = 0; side < 2; side++) {
-            /* a network's sensors go straight into its input slots */
-            duel_controller *c = side == DUEL_WEST ? west : east;
-            in[side] = c->net != NULL ? nrt_inputs(c->net) : in_buf[side];
-            duel_sense(&w, side, in[side]);
-        }
+        /* a network's sensors go straight into its input slots */
+        in[DUEL_WEST] = west->net != NULL ? nrt_inputs(west->net) : in_buf[DUEL_WEST];
+        in[DUEL_EAST] = east->net != NULL ? nrt_inputs(east->net) : in_buf[DUEL_EAST];
+        if (duel_sense_both(&w, &lanes, in[DUEL_WEST], in[DUEL_EAST]) != 0)
+            for (side = 0; side < 2; side++)
+                duel_sense(&w, side, in[side]);
         out[DUEL_WEST] = duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
         out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
         if (trace != NULL)

@@ -1,46 +1,5 @@
 /* duel_sense.c - the 13 sensors of spec v1: rangefinders by cross products (no trigonometry per object), energy, wall. */
-#include "duel_internal.h"
-
-/* Boundary k (k = 0..4) between sector k and sector k+1 (counter-clockwise)
- * lies at heading + (2k + 1) * 36 degrees. Boundaries 0/4 and 1/3 are the
- * heading's unit vector rotated by +-36 and +-108 degrees: these are
- * round(2^30 cos), round(2^30 sin) of 36 and 108 degrees, applied with
- * symmetric rounding so a mirror-image heading gets mirror-image boundaries
- * exactly; boundary 2 is the heading reversed. */
-static const int32_t duel_bcos[2] = {868675383, -331804471};
-static const int32_t duel_bsin[2] = {631129609, 1021189159};
-
-/* 1 - d / range in Q15 for a Q16.16 distance d: 32768 - d / units_per_step,
- * units_per_step = range * 65536 / 32768, rounded to nearest */
-static nrt_q15 duel_range_value(uint32_t d, uint32_t units_per_step)
-{
-    int32_t v = 32768 - (int32_t)((d + units_per_step / 2) / units_per_step);
-    if (v > 32767)
-        v = 32767;
-    return (nrt_q15)(v < 0 ? 0 : v);
-}
-
-/* A rangefinder reading 1 - d / 850 from the exact squared distance d2
- * (Q32): 32768 - round(d / 1700) with d in Q16.16 (850 * 65536 / 32768 =
- * 1700). round(d / 1700) = (floor(2 d / 1700) + 1) / 2, and
- * floor(2 d / 1700) = floor(sqrt(floor(d2 / 722500))) exactly (722500 =
- * 1700^2 / 4); the quotient stays below 2^32 on the board (d < 849). */
-static inline nrt_q15 duel_range_reading(int64_t d2)
-{
-    uint32_t n = duel_isqrt32((uint32_t)((uint64_t)d2 / 722500u));
-    int32_t v = 32768 - (int32_t)((n + 1u) >> 1);
-    return (nrt_q15)(v > 32767 ? 32767 : v);
-}
-
-/* The sector of the vector (vx, vy) from the robot: boundary 2 (straight
- * behind) splits the left sectors 0-2 from the right ones 3, 4, 0, then one
- * or two more cross products. A zero vector comes out as sector 0. */
-static inline int duel_sector(int64_t vx, int64_t vy, const int64_t bx[5], const int64_t by[5])
-{
-    if (bx[2] * vy < by[2] * vx)
-        return bx[0] * vy < by[0] * vx ? 0 : (bx[1] * vy < by[1] * vx ? 1 : 2);
-    return bx[3] * vy < by[3] * vx ? 3 : (bx[4] * vy < by[4] * vx ? 4 : 0);
-}
+#include "duel_sensors.h"
 
 /* Nearest squared distance per sector, minus one, into near[5] (UINT64_MAX:
  * none) over the items whose mask bit is set. Minus one, as unsigned: an
@@ -69,80 +28,12 @@ static void duel_scan(int32_t rx, int32_t ry, const int32_t *ox, const int32_t *
     }
 }
 
-/* The wall input, max(0, 1 - d / 200), d the distance along the heading to
- * the first board edge. */
-static nrt_q15 duel_wall_reading(const duel_robot *r, int32_t c, int32_t s)
-{
-    /* d = (edge - x) / cos with cos in Q30: multiply (not shift: the left
-     * shift of a negative value is undefined). Only a distance below 200
-     * gives a reading, and d >= edge - x (|cos| <= 1): an edge 200 or more
-     * away on its axis needs no division. */
-    const int64_t q30 = (int64_t)1 << 30, far = DUEL_FIX(200);
-    int64_t t = far, u = far, ex, ey;
-    ex = c > 0 ? (int64_t)DUEL_FIX(DUEL_BOARD) - r->x : r->x;
-    ey = s > 0 ? (int64_t)DUEL_FIX(DUEL_BOARD) - r->y : r->y;
-    if (c != 0 && ex < far)
-        t = ex * q30 / (c > 0 ? c : -c);
-    if (s != 0 && ey < far)
-        u = ey * q30 / (s > 0 ? s : -s);
-    if (u < t)
-        t = u;
-    return t >= far ? 0 : duel_range_value((uint32_t)t, 400);
-}
-
-/* The robot's frame for its sensors: boundary k (k = 0..4) of the
- * rangefinder sectors as Q30 vectors, and its heading's cos and sin. */
-typedef struct duel_frame {
-    int64_t bx[5], by[5];
-    int32_t c, s;
-} duel_frame;
-
-static void duel_frame_of(const duel_robot *me, duel_frame *f)
-{
-    int k;
-    duel_cossin_q30(me->heading, &f->c, &f->s);
-    /* boundaries k and 4-k are the heading rotated by +-(2k+1) 36 degrees:
-     * the same four products serve both; boundary 2 is -heading exactly */
-    for (k = 0; k < 2; k++) {
-        int64_t cc = (int64_t)f->c * duel_bcos[k], ss = (int64_t)f->s * duel_bsin[k];
-        int64_t cs = (int64_t)f->c * duel_bsin[k], sc = (int64_t)f->s * duel_bcos[k];
-        f->bx[k] = duel_round_shift(cc - ss, 30);
-        f->by[k] = duel_round_shift(cs + sc, 30);
-        f->bx[4 - k] = duel_round_shift(cc + ss, 30);
-        f->by[4 - k] = duel_round_shift(sc - cs, 30);
-    }
-    f->bx[2] = -f->c;
-    f->by[2] = -f->s;
-}
-
-/* 11: clamp((E_self - E_other) / 200, -1, 1); 200 * 65536 / 32768 = 400 units
- * per Q15 step; symmetric rounding and a symmetric clamp, so the two robots
- * read exact opposites */
-static nrt_q15 duel_energy_reading(int32_t self, int32_t other)
-{
-    int64_t diff = (int64_t)self - other;
-    diff = diff >= 0 ? (diff + 200) / 400 : -((-diff + 200) / 400);
-    return (nrt_q15)(diff > 32767 ? 32767 : (diff < -32767 ? -32767 : diff));
-}
-
 void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS])
 {
-    const duel_robot *me = &w->robot[side], *other = &w->robot[side ^ 1];
-    int64_t vx = (int64_t)other->x - me->x, vy = (int64_t)other->y - me->y, d2 = vx * vx + vy * vy;
+    const duel_robot *me = &w->robot[side];
     duel_frame f;
     uint64_t near[5];
-    int k;
-
     duel_frame_of(me, &f);
-    in[0] = NRT_ONE;
-    /* food rangefinders 1-5: 1 - d / 850 */
     duel_scan(me->x, me->y, w->food_x, w->food_y, w->food_mask & ((1u << w->n_food) - 1u), f.bx, f.by, near);
-    for (k = 0; k < 5; k++)
-        in[1 + k] = near[k] == UINT64_MAX ? 0 : duel_range_reading((int64_t)(near[k] + 1u));
-    /* robot rangefinders 6-10: one object, one sector */
-    in[6] = in[7] = in[8] = in[9] = in[10] = 0;
-    if (d2 != 0)
-        in[6 + duel_sector(vx, vy, f.bx, f.by)] = duel_range_reading(d2);
-    in[11] = duel_energy_reading(me->energy, other->energy);
-    in[12] = duel_wall_reading(me, f.c, f.s);
+    duel_sense_finish(w, side, &f, near, in);
 }

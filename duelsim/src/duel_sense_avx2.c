@@ -1,0 +1,193 @@
+/* duel_sense_avx2.c - both robots' sensors at once with AVX2 on x86-64: the readings of duel_sense, four cross products per instruction. */
+#include "duel_sensors.h"
+
+/*
+ * The same step as duel_sense (duel_sense.c), one more implementation of it:
+ * duel_play senses both robots of its game here when the processor has AVX2,
+ * and with duel_sense twice otherwise. The arithmetic is the scalar path's,
+ * in 64-bit lanes: every product is a signed 32 x 32 -> 64 multiply
+ * (vpmuldq) of values that fit 32 bits (offsets below 2^26, Q30 boundaries
+ * at most 2^30 + 1), so each cross product and squared distance is the same
+ * exact integer, and each comparison the same. tests/duelsim/test_golden.c
+ * checks both paths against the same recorded hashes and against each other.
+ *
+ * Lanes: (west, item i), (east, item i), (west, item j), (east, item j): two
+ * food items per round for both robots (duel_lanes, made once per game and
+ * again when an item is eaten). An odd item count repeats the last item,
+ * which cannot change a minimum.
+ */
+
+static int duel_simd_allowed = 1;
+
+void duel_simd_allow(int allow)
+{
+    duel_simd_allowed = allow;
+}
+
+#if DUEL_HAVE_AVX2
+#include <immintrin.h>
+
+int duel_simd_active(void)
+{
+    return duel_simd_allowed && __builtin_cpu_supports("avx2");
+}
+
+#define DUEL_AVX2 __attribute__((target("avx2")))
+
+/* (west value, east value) in both halves */
+DUEL_AVX2 static __m256i duel_lanes_of(int64_t west, int64_t east)
+{
+    return _mm256_set_epi64x(east, west, east, west);
+}
+
+/* the items of w->food_mask in pairs, an odd last one twice */
+static void duel_lanes_make(duel_lanes *l, const duel_world *w)
+{
+    unsigned idx[DUEL_MAX_FOOD + 1], n = 0, p;
+    uint32_t mask = w->food_mask & ((1u << w->n_food) - 1u);
+    for (; mask != 0; mask &= mask - 1u)
+        idx[n++] = duel_lowest_bit(mask);
+    if (n & 1u) {
+        idx[n] = idx[n - 1];
+        n++;
+    }
+    for (p = 0; p < n / 2; p++) {
+        l->x[p][0] = l->x[p][1] = w->food_x[idx[2 * p]];
+        l->x[p][2] = l->x[p][3] = w->food_x[idx[2 * p + 1]];
+        l->y[p][0] = l->y[p][1] = w->food_y[idx[2 * p]];
+        l->y[p][2] = l->y[p][3] = w->food_y[idx[2 * p + 1]];
+    }
+    l->pairs = n / 2;
+    l->mask = w->food_mask;
+}
+
+/* duel_range_reading of four squared distances given as keys (d2 - 1 with
+ * the top bit flipped; INT64_MAX: none, reading 0). floor(sqrt(d2)) comes
+ * from the double-precision square root of d2 (exact in a double: d2 <
+ * 2^52 on the board), then is corrected to the exact floor by two integer
+ * checks, whatever the rounding; n = floor(sqrt(d2)) / 850 by a multiply
+ * (2^40 / 850 rounded up, exact below 2^26), the reading 32768 - (n + 1) / 2
+ * at most 32767: duel_range_reading's value (floor(sqrt(floor(d2 / 722500)))
+ * = floor(floor(sqrt(d2)) / 850), 722500 = 850^2). */
+DUEL_AVX2 static __m256i duel_readings4(__m256i key)
+{
+    const __m256i none = _mm256_cmpeq_epi64(key, _mm256_set1_epi64x(INT64_MAX));
+    const __m256i two52 = _mm256_set1_epi64x(0x4330000000000000LL), one = _mm256_set1_epi64x(1);
+    __m256i d2 = _mm256_sub_epi64(key, _mm256_set1_epi64x(INT64_MAX));
+    __m256d x = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(d2, two52)), _mm256_castsi256_pd(two52));
+    __m256i r = _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(_mm256_sqrt_pd(x)));
+    __m256i r1, n, v;
+    /* r * r > d2: one less; (r + 1)^2 <= d2: one more */
+    r = _mm256_add_epi64(r, _mm256_cmpgt_epi64(_mm256_mul_epi32(r, r), d2));
+    r1 = _mm256_add_epi64(r, one);
+    r = _mm256_sub_epi64(r, _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_mul_epi32(r1, r1), d2), _mm256_set1_epi64x(-1)));
+    n = _mm256_srli_epi64(_mm256_mul_epu32(r, _mm256_set1_epi64x(1293543092)), 40);
+    v = _mm256_sub_epi64(_mm256_set1_epi64x(32768), _mm256_srli_epi64(_mm256_add_epi64(n, one), 1));
+    v = _mm256_add_epi64(v, _mm256_cmpgt_epi64(v, _mm256_set1_epi64x(32767)));
+    return _mm256_andnot_si256(none, v);
+}
+
+/* The food readings of both robots and the robot reading: rd[2k + side] for
+ * sector k, rd[10] (and rd[11]) for the robot rangefinder at robot_d2. */
+DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, const duel_frame f[2], int64_t robot_d2,
+                                     int64_t rd[12])
+{
+    /* keys: d2 - 1 with the top bit flipped, so that the unsigned order of
+     * d2 - 1 (duel_scan's) is the signed order AVX2 compares in; none (and an
+     * item at the robot's centre) is INT64_MAX */
+    const __m256i flip = _mm256_set1_epi64x(INT64_MAX), ones = _mm256_set1_epi64x(-1);
+    const __m256i rx = duel_lanes_of(w->robot[0].x, w->robot[1].x), ry = duel_lanes_of(w->robot[0].y, w->robot[1].y);
+    __m256i bx[5], by[5], best[5];
+    uint32_t p;
+    int k;
+
+    for (k = 0; k < 5; k++) {
+        bx[k] = duel_lanes_of(f[0].bx[k], f[1].bx[k]);
+        by[k] = duel_lanes_of(f[0].by[k], f[1].by[k]);
+        best[k] = flip;
+    }
+    for (p = 0; p < l->pairs; p++) {
+        __m256i vx = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->x[p]), rx);
+        __m256i vy = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->y[p]), ry);
+        __m256i d2 = _mm256_add_epi64(_mm256_mul_epi32(vx, vx), _mm256_mul_epi32(vy, vy));
+        __m256i key = _mm256_add_epi64(d2, flip);
+        __m256i s[5], m[5];
+        /* s[k]: v clockwise of boundary k, bx * vy < by * vx (duel_sector) */
+        for (k = 0; k < 5; k++)
+            s[k] = _mm256_cmpgt_epi64(_mm256_mul_epi32(by[k], vx), _mm256_mul_epi32(bx[k], vy));
+        /* duel_sector's tree as masks: s[2] is the left half */
+        m[1] = _mm256_andnot_si256(s[0], _mm256_and_si256(s[2], s[1]));
+        m[2] = _mm256_andnot_si256(s[1], _mm256_andnot_si256(s[0], s[2]));
+        m[3] = _mm256_andnot_si256(s[2], s[3]);
+        m[4] = _mm256_andnot_si256(s[3], _mm256_andnot_si256(s[2], s[4]));
+        m[0] = _mm256_xor_si256(_mm256_or_si256(_mm256_or_si256(m[1], m[2]), _mm256_or_si256(m[3], m[4])), ones);
+        for (k = 0; k < 5; k++) {
+            __m256i better = _mm256_and_si256(m[k], _mm256_cmpgt_epi64(best[k], key));
+            best[k] = _mm256_blendv_epi8(best[k], key, better);
+        }
+    }
+    for (k = 0; k < 5; k++) {
+        /* the nearer of the two halves */
+        __m256i other = _mm256_permute4x64_epi64(best[k], 0x4E);
+        best[k] = _mm256_blendv_epi8(best[k], other, _mm256_cmpgt_epi64(best[k], other));
+    }
+    /* (west k, east k, west k+1, east k+1): sectors 0-1, 2-3, then 4 and
+     * the robot rangefinder's distance */
+    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4(_mm256_blend_epi32(best[0], best[1], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4(_mm256_blend_epi32(best[2], best[3], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 8),
+                        duel_readings4(_mm256_blend_epi32(best[4], _mm256_add_epi64(_mm256_set1_epi64x(robot_d2), flip), 0xF0)));
+}
+
+int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
+                    nrt_q15 east[DUEL_N_INPUTS])
+{
+    const duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
+    int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy, rd[12];
+    nrt_q15 *in[2];
+    duel_frame f[2];
+    int side, k;
+    if (!duel_simd_active())
+        return -1;
+    if (lanes->mask != w->food_mask)
+        duel_lanes_make(lanes, w);
+    duel_frame_of(a, &f[0]);
+    duel_frame_of(b, &f[1]);
+    duel_scan_pair(w, lanes, f, d2, rd);
+    in[0] = west;
+    in[1] = east;
+    for (side = 0; side < 2; side++) {
+        /* duel_sense_finish with the readings taken above */
+        const duel_robot *me = &w->robot[side], *other = &w->robot[side ^ 1];
+        nrt_q15 *v = in[side];
+        v[0] = NRT_ONE;
+        for (k = 0; k < 5; k++)
+            v[1 + k] = (nrt_q15)rd[2 * k + side];
+        v[6] = v[7] = v[8] = v[9] = v[10] = 0;
+        /* the other robot is at (vx, vy) from west, at (-vx, -vy) from east */
+        if (d2 != 0)
+            v[6 + duel_sector(side == 0 ? vx : -vx, side == 0 ? vy : -vy, f[side].bx, f[side].by)] = (nrt_q15)rd[10];
+        v[11] = duel_energy_reading(me->energy, other->energy);
+        v[12] = duel_wall_reading(me, f[side].c, f[side].s);
+    }
+    return 0;
+}
+
+#else /* no AVX2 path on this processor or compiler */
+
+int duel_simd_active(void)
+{
+    return 0;
+}
+
+int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
+                    nrt_q15 east[DUEL_N_INPUTS])
+{
+    (void)w;
+    (void)lanes;
+    (void)west;
+    (void)east;
+    return -1;
+}
+
+#endif
