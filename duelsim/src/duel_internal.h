@@ -138,6 +138,26 @@ static inline uint32_t duel_isqrt32(uint32_t x)
     return r;
 }
 
+/* duel_world_step, the food tested only when food_near: 0 promises that no
+ * item can be within the eating distance after this move (duel_play knows
+ * it from the food readings, duel_food_near). */
+int duel_world_step_food(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS],
+                         const nrt_q15 out_east[DUEL_N_OUTPUTS], duel_event *ev, int food_near);
+
+/* Whether a robot whose food readings (inputs 1-5) these are may be within
+ * the eating distance of an item after its next move. A reading r < 32113 is
+ * round(d / 1700) >= 656 in Q16.16, so d >= 655.5 * 1700 / 65536 > 17.003
+ * units; a move is at most 1.33 units (the clamp to the board only shortens
+ * it), so every item stays beyond 15.67, above the eating distance of 15. An
+ * item at the robot's very centre gives no reading, but cannot be there: it
+ * would have been within 15 after the previous move and eaten then (or that
+ * move's readings were not all below 32113), and no item is at a start
+ * position. */
+static inline int duel_food_near(const nrt_q15 in[DUEL_N_INPUTS])
+{
+    return in[1] >= 32113 || in[2] >= 32113 || in[3] >= 32113 || in[4] >= 32113 || in[5] >= 32113;
+}
+
 /* ---- the AVX2 sensing (duel_sense_avx2.c) ---- */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
 #define DUEL_HAVE_AVX2 1

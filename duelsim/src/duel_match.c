@@ -61,7 +61,8 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
         if (trace != NULL)
             before = w;
-        duel_world_step(&w, out[DUEL_WEST], out[DUEL_EAST], &ev);
+        duel_world_step_food(&w, out[DUEL_WEST], out[DUEL_EAST], &ev,
+                             duel_food_near(in[DUEL_WEST]) || duel_food_near(in[DUEL_EAST]));
         if (trace != NULL) {
             /* the callback gets plain arrays: a network's inputs and outputs
              * are still in its activation buffers, copy them out */

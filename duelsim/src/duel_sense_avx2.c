@@ -40,6 +40,68 @@ DUEL_AVX2 static __m256i duel_lanes_of(int64_t west, int64_t east)
     return _mm256_set_epi64x(east, west, east, west);
 }
 
+/* x / 2^30 rounded as duel_round_shift does, right for results that fit 32
+ * bits (the boundaries: at most 2^30 + 1), sign-extended from those */
+DUEL_AVX2 static __m256i duel_round30(__m256i x)
+{
+    const __m256i half = _mm256_set1_epi64x((int64_t)1 << 29);
+    __m256i neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), x);
+    /* the low 32 bits of a logical and of an arithmetic shift agree */
+    __m256i q = _mm256_srli_epi64(_mm256_add_epi64(_mm256_add_epi64(x, half), neg), 30);
+    return _mm256_cvtepi32_epi64(
+        _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(q, _mm256_set_epi32(7, 5, 3, 1, 6, 4, 2, 0))));
+}
+
+/* Both robots' frames (duel_frame_of) and their boundaries in lanes (west,
+ * east, west, east): the eight products of each robot four at a time. */
+DUEL_AVX2 static void duel_frames_of(const duel_world *w, duel_frame f[2], __m256i bx[5], __m256i by[5])
+{
+    __m256i c, sn, kc, ks, cc, ss, cs, sc, lo_x, lo_y, hi_x, hi_y;
+    int64_t out[4][4];
+    int side;
+    duel_cossin_q30(w->robot[DUEL_WEST].heading, &f[0].c, &f[0].s);
+    duel_cossin_q30(w->robot[DUEL_EAST].heading, &f[1].c, &f[1].s);
+    c = duel_lanes_of(f[0].c, f[1].c);
+    sn = duel_lanes_of(f[0].s, f[1].s);
+    /* lanes (west, east) for boundary pair 0/4, then for pair 1/3 */
+    kc = _mm256_set_epi64x(duel_bcos[1], duel_bcos[1], duel_bcos[0], duel_bcos[0]);
+    ks = _mm256_set_epi64x(duel_bsin[1], duel_bsin[1], duel_bsin[0], duel_bsin[0]);
+    cc = _mm256_mul_epi32(c, kc);
+    ss = _mm256_mul_epi32(sn, ks);
+    cs = _mm256_mul_epi32(c, ks);
+    sc = _mm256_mul_epi32(sn, kc);
+    lo_x = duel_round30(_mm256_sub_epi64(cc, ss)); /* bx[0] (west, east), bx[1] (west, east) */
+    lo_y = duel_round30(_mm256_add_epi64(cs, sc));
+    hi_x = duel_round30(_mm256_add_epi64(cc, ss)); /* bx[4], bx[3] */
+    hi_y = duel_round30(_mm256_sub_epi64(sc, cs));
+    bx[0] = _mm256_permute4x64_epi64(lo_x, 0x44);
+    bx[1] = _mm256_permute4x64_epi64(lo_x, 0xEE);
+    bx[4] = _mm256_permute4x64_epi64(hi_x, 0x44);
+    bx[3] = _mm256_permute4x64_epi64(hi_x, 0xEE);
+    by[0] = _mm256_permute4x64_epi64(lo_y, 0x44);
+    by[1] = _mm256_permute4x64_epi64(lo_y, 0xEE);
+    by[4] = _mm256_permute4x64_epi64(hi_y, 0x44);
+    by[3] = _mm256_permute4x64_epi64(hi_y, 0xEE);
+    bx[2] = _mm256_sub_epi64(_mm256_setzero_si256(), c);
+    by[2] = _mm256_sub_epi64(_mm256_setzero_si256(), sn);
+    _mm256_storeu_si256((__m256i *)(void *)out[0], lo_x);
+    _mm256_storeu_si256((__m256i *)(void *)out[1], lo_y);
+    _mm256_storeu_si256((__m256i *)(void *)out[2], hi_x);
+    _mm256_storeu_si256((__m256i *)(void *)out[3], hi_y);
+    for (side = 0; side < 2; side++) {
+        f[side].bx[0] = out[0][side];
+        f[side].bx[1] = out[0][2 + side];
+        f[side].bx[4] = out[2][side];
+        f[side].bx[3] = out[2][2 + side];
+        f[side].by[0] = out[1][side];
+        f[side].by[1] = out[1][2 + side];
+        f[side].by[4] = out[3][side];
+        f[side].by[3] = out[3][2 + side];
+        f[side].bx[2] = -f[side].c;
+        f[side].by[2] = -f[side].s;
+    }
+}
+
 /* the items of w->food_mask in pairs, an odd last one twice */
 static void duel_lanes_make(duel_lanes *l, const duel_world *w)
 {
@@ -89,23 +151,20 @@ DUEL_AVX2 static __m256i duel_readings4(__m256i key)
 
 /* The food readings of both robots and the robot reading: rd[2k + side] for
  * sector k, rd[10] (and rd[11]) for the robot rangefinder at robot_d2. */
-DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, const duel_frame f[2], int64_t robot_d2,
-                                     int64_t rd[12])
+DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, const __m256i bx[5], const __m256i by[5],
+                                     int64_t robot_d2, int64_t rd[12])
 {
     /* keys: d2 - 1 with the top bit flipped, so that the unsigned order of
      * d2 - 1 (duel_scan's) is the signed order AVX2 compares in; none (and an
      * item at the robot's centre) is INT64_MAX */
     const __m256i flip = _mm256_set1_epi64x(INT64_MAX), ones = _mm256_set1_epi64x(-1);
     const __m256i rx = duel_lanes_of(w->robot[0].x, w->robot[1].x), ry = duel_lanes_of(w->robot[0].y, w->robot[1].y);
-    __m256i bx[5], by[5], best[5];
+    __m256i best[5];
     uint32_t p;
     int k;
 
-    for (k = 0; k < 5; k++) {
-        bx[k] = duel_lanes_of(f[0].bx[k], f[1].bx[k]);
-        by[k] = duel_lanes_of(f[0].by[k], f[1].by[k]);
+    for (k = 0; k < 5; k++)
         best[k] = flip;
-    }
     for (p = 0; p < l->pairs; p++) {
         __m256i vx = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->x[p]), rx);
         __m256i vy = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->y[p]), ry);
@@ -139,21 +198,19 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
                         duel_readings4(_mm256_blend_epi32(best[4], _mm256_add_epi64(_mm256_set1_epi64x(robot_d2), flip), 0xF0)));
 }
 
-int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
-                    nrt_q15 east[DUEL_N_INPUTS])
+DUEL_AVX2 static void duel_sense_both_avx2(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
+                                           nrt_q15 east[DUEL_N_INPUTS])
 {
     const duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
     int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy, rd[12];
     nrt_q15 *in[2];
     duel_frame f[2];
+    __m256i bx[5], by[5];
     int side, k;
-    if (!duel_simd_active())
-        return -1;
     if (lanes->mask != w->food_mask)
         duel_lanes_make(lanes, w);
-    duel_frame_of(a, &f[0]);
-    duel_frame_of(b, &f[1]);
-    duel_scan_pair(w, lanes, f, d2, rd);
+    duel_frames_of(w, f, bx, by);
+    duel_scan_pair(w, lanes, bx, by, d2, rd);
     in[0] = west;
     in[1] = east;
     for (side = 0; side < 2; side++) {
@@ -170,6 +227,14 @@ int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_
         v[11] = duel_energy_reading(me->energy, other->energy);
         v[12] = duel_wall_reading(me, f[side].c, f[side].s);
     }
+}
+
+int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
+                    nrt_q15 east[DUEL_N_INPUTS])
+{
+    if (!duel_simd_active())
+        return -1;
+    duel_sense_both_avx2(w, lanes, west, east);
     return 0;
 }
 

@@ -89,6 +89,12 @@ static int duel_near(const duel_robot *r, int32_t x, int32_t y)
 int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const nrt_q15 out_east[DUEL_N_OUTPUTS],
                     duel_event *ev)
 {
+    return duel_world_step_food(w, out_west, out_east, ev, 1);
+}
+
+int duel_world_step_food(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS],
+                         const nrt_q15 out_east[DUEL_N_OUTPUTS], duel_event *ev, int food_near)
+{
     static const int64_t eat2 = (int64_t)DUEL_EAT_DIST * DUEL_EAT_DIST << 32;
     static const int64_t hit2 = (int64_t)DUEL_COLLIDE_DIST * DUEL_COLLIDE_DIST << 32;
     duel_event local;
@@ -107,7 +113,7 @@ int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const
     duel_move(a, out_west);
     duel_move(b, out_east);
     /* 4. food: below 15 eats; both: the nearer; an exact tie shares */
-    for (left = w->food_mask & ((1u << w->n_food) - 1u); left != 0; left &= left - 1u) {
+    for (left = food_near ? w->food_mask & ((1u << w->n_food) - 1u) : 0; left != 0; left &= left - 1u) {
         int64_t da, db;
         int ea, eb;
         i = duel_lowest_bit(left);

@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "duel.h"
+#include "duel_internal.h"
 
 /*
  * Every speed-up of the simulator or the runtime must leave every game as it
@@ -21,6 +22,11 @@
  *
  * The inputs are made here, from a fixed xorshift generator, as raw blobs and
  * raw world states, so nothing outside duelsim and the runtime can move them.
+ *
+ * Where the processor has AVX2, the games are played twice, with the AVX2
+ * sensing (duel_sense_avx2.c) and with the scalar one, against the same
+ * hashes, and every random state is also sensed by duel_sense_both, which
+ * must give duel_sense's inputs exactly.
  */
 
 static uint64_t tg_rng = 0x9E3779B97F4A7C15ull;
@@ -184,7 +190,8 @@ static duel_angle tg_heading(void)
 static void test_golden_sensing(void **state)
 {
     uint64_t h = TG_HASH0;
-    int n, side, k;
+    nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
+    int n, side, k, simd_states = 0;
     (void)state;
     tg_rng = 0xFEEDFACECAFEBEEFull;
     for (n = 0; n < 100000; n++) {
@@ -218,9 +225,64 @@ static void test_golden_sensing(void **state)
             duel_sense(&w, side, in);
             for (k = 0; k < DUEL_N_INPUTS; k++)
                 tg_hash(&h, in[k]);
+            memcpy(scalar[side], in, sizeof in);
+        }
+        if (duel_simd_active()) {
+            duel_lanes lanes;
+            lanes.mask = ~0u;
+            assert_int_equal(duel_sense_both(&w, &lanes, both[0], both[1]), 0);
+            if (memcmp(both, scalar, sizeof both) != 0) {
+                print_error("state %d: the AVX2 sensing differs from duel_sense\n", n);
+                fail();
+            }
+            simd_states++;
         }
     }
+    print_message("sensing: %d states, %d of them also through the AVX2 path\n", n, simd_states);
     tg_check("sensing", h, 0xbb2c7fb9fb6477e0ull);
+}
+
+/* The AVX2 readings at every place a reading changes: the other robot at
+ * d = 850 (2m - 1) Q16.16 units (d2 = (2m - 1)^2 722500, where round(d /
+ * 1700) steps from m - 1 to m) and one unit nearer and farther, along an
+ * axis and along a diagonal, for every m the board allows. */
+static void test_golden_simd_thresholds(void **state)
+{
+    int m, off, diag, side, checked = 0;
+    (void)state;
+    if (!duel_simd_active()) {
+        print_message("no AVX2 here: nothing to compare\n");
+        return;
+    }
+    for (diag = 0; diag < 2; diag++)
+        for (m = 1; m < 23000; m++)
+            for (off = -1; off <= 1; off++) {
+                duel_world w;
+                duel_lanes lanes;
+                nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
+                int64_t d = (int64_t)850 * (2 * m - 1) + off;
+                /* on the diagonal the offset is d / sqrt(2) on each axis, rounded down */
+                int64_t dx = diag ? d * 46341 / 65536 : d, dy = diag ? dx : 0;
+                if (DUEL_FIX(DUEL_RADIUS) + dx > DUEL_FIX(DUEL_BOARD - DUEL_RADIUS))
+                    continue;
+                assert_int_equal(duel_world_init(&w, DUEL_TRAINING), DUEL_OK);
+                w.robot[0].x = DUEL_FIX(DUEL_RADIUS);
+                w.robot[0].y = DUEL_FIX(DUEL_RADIUS);
+                w.robot[1].x = (int32_t)(DUEL_FIX(DUEL_RADIUS) + dx);
+                w.robot[1].y = (int32_t)(DUEL_FIX(DUEL_RADIUS) + dy);
+                w.robot[0].heading = (duel_angle)(m * 2654435761u);
+                w.robot[1].heading = (duel_angle)(m * 40503u);
+                for (side = 0; side < 2; side++)
+                    duel_sense(&w, side, scalar[side]);
+                lanes.mask = ~0u;
+                assert_int_equal(duel_sense_both(&w, &lanes, both[0], both[1]), 0);
+                if (memcmp(both, scalar, sizeof both) != 0) {
+                    print_error("d = %lld (m = %d, diagonal %d): the AVX2 sensing differs\n", (long long)d, m, diag);
+                    fail();
+                }
+                checked++;
+            }
+    print_message("%d distances at the readings' steps: AVX2 = scalar\n", checked);
 }
 
 /* ---- network steps ---- */
@@ -319,13 +381,12 @@ static duel_controller tg_controller(int i)
  * against its twin) on 13 food configurations, each side: 1,898 games,
  * every step traced; then two whole 288-game comparisons and 21 more
  * games, untraced, the way evolution plays */
-static void test_golden_games(void **state)
+static void tg_games(void)
 {
     static tg_net twin;
     uint64_t traced = TG_HASH0, untraced = TG_HASH0;
     int i, j, k, side, n = DUEL_N_BUILTINS + TG_NETS;
     duel_tally tally;
-    (void)state;
     tg_make_duel_nets();
     for (i = 0; i < n; i++)
         for (j = i; j < n; j++) {
@@ -367,10 +428,24 @@ static void test_golden_games(void **state)
     tg_check("untraced games", untraced, 0xf065414941a055caull);
 }
 
+static void test_golden_games(void **state)
+{
+    (void)state;
+    if (duel_simd_active()) {
+        print_message("games with the AVX2 sensing\n");
+        tg_games();
+        duel_simd_allow(0);
+    }
+    print_message("games with the scalar sensing\n");
+    tg_games();
+    duel_simd_allow(1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_golden_sensing),
+        cmocka_unit_test(test_golden_simd_thresholds),
         cmocka_unit_test(test_golden_steps),
         cmocka_unit_test(test_golden_games),
     };
