@@ -94,12 +94,14 @@ int main(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--callgrind") == 0 && i + 1 < argc) {
             callgrind_games = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--scalar") == 0) {
+            duel_simd_allow(0); /* the scalar sensing, for comparisons */
         } else if (strcmp(argv[i], "--conns") == 0 && i + 1 < argc) {
             callgrind_conns = atoi(argv[++i]);
         } else if (strcmp(argv[i], "--write-blobs") == 0 && i + 1 < argc) {
             blob_dir = argv[++i];
         } else {
-            fprintf(stderr, "usage: duel_bench [--callgrind GAMES [--conns 39|202]] [--write-blobs DIR]\n");
+            fprintf(stderr, "usage: duel_bench [--scalar] [--callgrind GAMES [--conns 39|202]] [--write-blobs DIR]\n");
             return 2;
         }
     }
@@ -143,8 +145,9 @@ int main(int argc, char **argv)
             sum = db_checksum(sum, &r);
         }
         /* the checksum of every game's result: the same for every build of the same spec */
-        printf("{\"games\":%d,\"conns\":%d,\"robot_steps\":%llu,\"checksum\":\"%016llx\"}\n", callgrind_games,
-               callgrind_conns, (unsigned long long)robot_steps, (unsigned long long)sum);
+        printf("{\"games\":%d,\"conns\":%d,\"simd\":%d,\"robot_steps\":%llu,\"checksum\":\"%016llx\"}\n",
+               callgrind_games, callgrind_conns, duel_simd_active(), (unsigned long long)robot_steps,
+               (unsigned long long)sum);
         goto done;
     }
     sps39 = db_steps_per_second(&p39, 1.0, &steps39);
@@ -156,6 +159,7 @@ int main(int argc, char **argv)
     printf("202-connection networks: %.0f game-steps/s (%.1f ns per robot-step)\n", sps202, 0.5e9 / sps202);
     printf("288-game comparison (39 connections): %.3f s, %.0f games/s (wins %u / %u, draws %u, timeouts %u)\n", cmp_s,
            288.0 / cmp_s, tally.wins_a, tally.wins_b, tally.draws, tally.timeouts);
+    printf("sensing: %s\n", duel_simd_active() ? "AVX2 (duel_sense_avx2.c)" : "scalar");
     printf("{\"game_steps_per_s_39\":%.0f,\"game_steps_per_s_202\":%.0f,\"games_per_s_288\":%.1f,"
            "\"comparison_seconds\":%.4f}\n", sps39, sps202, 288.0 / cmp_s, cmp_s);
 done:

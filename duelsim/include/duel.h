@@ -96,6 +96,15 @@ void duel_cossin(duel_angle a, int32_t *c, int32_t *s);
 /* floor(sqrt(x)) */
 uint32_t duel_isqrt64(uint64_t x);
 
+/* ---- the vector path ---- */
+/* 1 when duel_play senses both robots with AVX2: an x86-64 build on a
+ * processor that has it (docs/duelsim.md, "Speed"). Every result is the same
+ * with and without it. */
+int duel_simd_active(void);
+/* 0 turns the AVX2 path off (1, the default, allows it), for comparisons and
+ * tests. Not synchronised: call it before any game starts. */
+void duel_simd_allow(int allow);
+
 /* ---- controllers ---- */
 enum duel_builtin { DUEL_IDLE = 0, DUEL_SPINNER, DUEL_FORAGER, DUEL_HUNTER, DUEL_FORAGER_HUNTER, DUEL_N_BUILTINS };
 

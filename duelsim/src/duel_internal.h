@@ -182,10 +182,5 @@ typedef struct duel_lanes {
  * lanes starts with mask ~0u. */
 int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
                     nrt_q15 east[DUEL_N_INPUTS]);
-/* 1 when duel_sense_both senses (AVX2 built, present and allowed) */
-int duel_simd_active(void);
-/* For tests and benchmarks: 0 makes duel_play use the scalar duel_sense only
- * (before any game starts: it is not synchronised). */
-void duel_simd_allow(int allow);
 
 #endif /* DUEL_INTERNAL_H */
