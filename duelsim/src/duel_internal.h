@@ -159,7 +159,7 @@ static inline int duel_food_near(const nrt_q15 in[DUEL_N_INPUTS])
 }
 
 /* ---- the AVX2 sensing (duel_sense_avx2.c) ---- */
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__) && !defined(DUEL_NO_AVX2)
 #define DUEL_HAVE_AVX2 1
 #else
 #define DUEL_HAVE_AVX2 0
