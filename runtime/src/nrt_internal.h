@@ -1,4 +1,4 @@
-/* nrt_internal.h - what the runtime's files share: the sigmoid table and its inline evaluation, the products of a node's sum. */
+/* nrt_internal.h - the sigmoid table and its inline evaluation, shared by nrt_sigmoid.c and nrt_step.c. */
 #ifndef NRT_INTERNAL_H
 #define NRT_INTERNAL_H
 
@@ -31,52 +31,5 @@ static inline nrt_q15 nrt_sig_eval(int64_t sum)
         return (nrt_q15)(32768 - y);
     return (nrt_q15)(y > 32767 ? 32767 : y);
 }
-
-/* Connections k and k + 1 of a node: their products w * a as one 64-bit
- * term. On a 64-bit processor each product is widened (a 64-bit multiply
- * costs what a 32-bit one does); elsewhere the pair is summed in 32 bits
- * first, which cannot overflow: |w| <= 32767 (the loader refuses -32768)
- * and |a| <= 32768 keep each product at most 2^30 - 2^15, so one widening
- * (on Armv6-M a sign extension and a 64-bit add) serves two connections.
- * Either way the sum of the node is the same exact integer. */
-#if UINTPTR_MAX > 0xFFFFFFFFu
-#define NRT_PAIR(w, src, a, k) \
-    ((int64_t)(w)[k] * (a)[(src)[k]] + (int64_t)(w)[(k) + 1u] * (a)[(src)[(k) + 1u]])
-#else
-#define NRT_PAIR(w, src, a, k) \
-    ((int64_t)((int32_t)(w)[k] * (a)[(src)[k]] + (int32_t)(w)[(k) + 1u] * (a)[(src)[(k) + 1u]]))
-#endif
-
-/* sum plus the products of the last 0-3 connections k..e-1 of a node */
-static inline int64_t nrt_tail(int64_t sum, const nrt_w12 *w, const uint16_t *src, const nrt_q15 *prev, size_t k,
-                               size_t e)
-{
-    switch (e - k) {
-    case 3:
-        sum += NRT_PAIR(w, src, prev, k);
-        k += 2u;
-        /* fall through */
-    case 1:
-        sum += (int32_t)w[k] * prev[src[k]];
-        break;
-    case 2:
-        sum += NRT_PAIR(w, src, prev, k);
-        break;
-    default:
-        break;
-    }
-    return sum;
-}
-
-/* ---- nrt_step_avx2.c: the node sums with AVX2 gathers on x86-64 ---- */
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__) && !defined(NRT_NO_AVX2)
-#define NRT_HAVE_AVX2 1
-/* nrt_step's node activations (next from prev) eight connections a round:
- * 0, or -1 when the processor has no AVX2 or the network's arrays are not
- * laid out as nrt_load lays them (then nrt_step computes them itself). */
-int nrt_nodes_avx2(const nrt_net *net, const nrt_q15 *prev, nrt_q15 *next);
-#else
-#define NRT_HAVE_AVX2 0
-#endif
 
 #endif /* NRT_INTERNAL_H */

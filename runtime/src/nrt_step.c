@@ -3,6 +3,21 @@
 
 #include "nrt_internal.h"
 
+/* Connections k and k + 1 of a node: their products w * a as one 64-bit
+ * term. On a 64-bit processor each product is widened (a 64-bit multiply
+ * costs what a 32-bit one does); elsewhere the pair is summed in 32 bits
+ * first, which cannot overflow: |w| <= 32767 (the loader refuses -32768)
+ * and |a| <= 32768 keep each product at most 2^30 - 2^15, so one widening
+ * (on Armv6-M a sign extension and a 64-bit add) serves two connections.
+ * Either way the sum of the node is the same exact integer. */
+#if UINTPTR_MAX > 0xFFFFFFFFu
+#define NRT_PAIR(w, src, a, k) \
+    ((int64_t)(w)[k] * (a)[(src)[k]] + (int64_t)(w)[(k) + 1u] * (a)[(src)[(k) + 1u]])
+#else
+#define NRT_PAIR(w, src, a, k) \
+    ((int64_t)((int32_t)(w)[k] * (a)[(src)[k]] + (int32_t)(w)[(k) + 1u] * (a)[(src)[(k) + 1u]]))
+#endif
+
 void nrt_reset(nrt_net *net)
 {
     memset(net->act[0], 0, 2u * net->n_nodes);
@@ -33,11 +48,6 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
      * the caller wrote them through nrt_inputs). */
     if (inputs != prev)
         memcpy(prev, inputs, 2u * net->n_inputs);
-#if NRT_HAVE_AVX2
-    /* the same sums eight connections a round, where the processor can */
-    if (nrt_nodes_avx2(net, prev, next) == 0)
-        non_in = 0;
-#endif
     for (j = 0; j < non_in; j++) {
         /* Q3.12 x Q1.15 = Q27 products (< 2^30); 64 bits hold the sum of the
          * at most 65535 connections a blob can give one node (< 2^46). The
@@ -50,7 +60,20 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
         int64_t sum = 0;
         for (; k + 4u <= e; k += 4u)
             sum += NRT_PAIR(w, src, prev, k) + NRT_PAIR(w, src, prev, k + 2u);
-        sum = nrt_tail(sum, w, src, prev, k, e);
+        switch (e - k) { /* the last 0-3 */
+        case 3:
+            sum += NRT_PAIR(w, src, prev, k);
+            k += 2u;
+            /* fall through */
+        case 1:
+            sum += (int32_t)w[k] * prev[src[k]];
+            break;
+        case 2:
+            sum += NRT_PAIR(w, src, prev, k);
+            break;
+        default:
+            break;
+        }
         k = e;
         next[j] = nrt_sig_eval(sum);
     }
