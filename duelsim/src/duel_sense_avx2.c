@@ -157,7 +157,7 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
     /* keys: d2 - 1 with the top bit flipped, so that the unsigned order of
      * d2 - 1 (duel_scan's) is the signed order AVX2 compares in; none (and an
      * item at the robot's centre) is INT64_MAX */
-    const __m256i flip = _mm256_set1_epi64x(INT64_MAX), ones = _mm256_set1_epi64x(-1);
+    const __m256i flip = _mm256_set1_epi64x(INT64_MAX);
     const __m256i rx = duel_lanes_of(w->robot[0].x, w->robot[1].x), ry = duel_lanes_of(w->robot[0].y, w->robot[1].y);
     __m256i best[5];
     uint32_t p;
@@ -174,12 +174,13 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
         /* s[k]: v clockwise of boundary k, bx * vy < by * vx (duel_sector) */
         for (k = 0; k < 5; k++)
             s[k] = _mm256_cmpgt_epi64(_mm256_mul_epi32(by[k], vx), _mm256_mul_epi32(bx[k], vy));
-        /* duel_sector's tree as masks: s[2] is the left half */
-        m[1] = _mm256_andnot_si256(s[0], _mm256_and_si256(s[2], s[1]));
-        m[2] = _mm256_andnot_si256(s[1], _mm256_andnot_si256(s[0], s[2]));
-        m[3] = _mm256_andnot_si256(s[2], s[3]);
-        m[4] = _mm256_andnot_si256(s[3], _mm256_andnot_si256(s[2], s[4]));
-        m[0] = _mm256_xor_si256(_mm256_or_si256(_mm256_or_si256(m[1], m[2]), _mm256_or_si256(m[3], m[4])), ones);
+        /* Sector k: not clockwise of boundary k-1, clockwise of boundary k.
+         * With the boundaries 72 degrees apart in angular order this is
+         * duel_sector's tree for every non-zero v (a bearing on boundary k-1
+         * belongs to sector k, on the ray opposite it to no neighbour of
+         * it); v = 0 gets no sector, and its key never wins anyway. */
+        for (k = 0; k < 5; k++)
+            m[k] = _mm256_andnot_si256(s[(k + 4) % 5], s[k]);
         for (k = 0; k < 5; k++) {
             __m256i better = _mm256_and_si256(m[k], _mm256_cmpgt_epi64(best[k], key));
             best[k] = _mm256_blendv_epi8(best[k], key, better);

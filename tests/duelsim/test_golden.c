@@ -245,7 +245,8 @@ static void test_golden_sensing(void **state)
 /* The AVX2 readings at every place a reading changes: the other robot at
  * d = 850 (2m - 1) Q16.16 units (d2 = (2m - 1)^2 722500, where round(d /
  * 1700) steps from m - 1 to m) and one unit nearer and farther, along an
- * axis and along a diagonal, for every m the board allows. */
+ * axis and along a diagonal, for every m the board allows; then food on a
+ * sector boundary's line. */
 static void test_golden_simd_thresholds(void **state)
 {
     int m, off, diag, side, checked = 0;
@@ -282,7 +283,33 @@ static void test_golden_simd_thresholds(void **state)
                 }
                 checked++;
             }
-    print_message("%d distances at the readings' steps: AVX2 = scalar\n", checked);
+    /* food exactly on boundary 2's line (behind and ahead): robots on a
+     * row or a column of the training food, heading along it */
+    for (side = 0; side < 4; side++)
+        for (m = 0; m < 3; m++)
+            for (off = 10; off <= 590; off += 5) {
+                duel_world w;
+                duel_lanes lanes;
+                nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
+                int r;
+                assert_int_equal(duel_world_init(&w, DUEL_TRAINING), DUEL_OK);
+                w.robot[0].x = side % 2 == 0 ? DUEL_FIX(off) : DUEL_FIX(200 + 100 * m);
+                w.robot[0].y = side % 2 == 0 ? DUEL_FIX(200 + 100 * m) : DUEL_FIX(off);
+                w.robot[0].heading = (duel_angle)side << 30;
+                w.robot[1].x = DUEL_FIX(590 - off);
+                w.robot[1].y = w.robot[0].y;
+                w.robot[1].heading = (duel_angle)(side ^ 2) << 30;
+                for (r = 0; r < 2; r++)
+                    duel_sense(&w, r, scalar[r]);
+                lanes.mask = ~0u;
+                assert_int_equal(duel_sense_both(&w, &lanes, both[0], both[1]), 0);
+                if (memcmp(both, scalar, sizeof both) != 0) {
+                    print_error("heading %d, row %d, at %d: the AVX2 sensing differs\n", side, m, off);
+                    fail();
+                }
+                checked++;
+            }
+    print_message("%d states at the readings' steps and on sector boundaries: AVX2 = scalar\n", checked);
 }
 
 /* ---- network steps ---- */
