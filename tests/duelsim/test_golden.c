@@ -185,12 +185,25 @@ static duel_angle tg_heading(void)
     }
 }
 
+/* 1 when duel_sense_both (the AVX2 path, with its food lanes made afresh)
+ * gives other inputs than duel_sense on both sides of w */
+static int tg_paths_differ(const duel_world *w)
+{
+    nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
+    duel_lanes lanes;
+    int side;
+    for (side = 0; side < 2; side++)
+        duel_sense(w, side, scalar[side]);
+    lanes.mask = ~0u;
+    assert_int_equal(duel_sense_both(w, &lanes, both[0], both[1]), 0);
+    return memcmp(both, scalar, sizeof both) != 0;
+}
+
 /* 200,000 readings of random states: robots anywhere (on food, on each
  * other, at the walls), any heading, any energies, any food left */
 static void test_golden_sensing(void **state)
 {
     uint64_t h = TG_HASH0;
-    nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
     int n, side, k, simd_states = 0;
     (void)state;
     tg_rng = 0xFEEDFACECAFEBEEFull;
@@ -225,13 +238,9 @@ static void test_golden_sensing(void **state)
             duel_sense(&w, side, in);
             for (k = 0; k < DUEL_N_INPUTS; k++)
                 tg_hash(&h, in[k]);
-            memcpy(scalar[side], in, sizeof in);
         }
         if (duel_simd_active()) {
-            duel_lanes lanes;
-            lanes.mask = ~0u;
-            assert_int_equal(duel_sense_both(&w, &lanes, both[0], both[1]), 0);
-            if (memcmp(both, scalar, sizeof both) != 0) {
+            if (tg_paths_differ(&w)) {
                 print_error("state %d: the AVX2 sensing differs from duel_sense\n", n);
                 fail();
             }
@@ -259,8 +268,6 @@ static void test_golden_simd_thresholds(void **state)
         for (m = 1; m < 23000; m++)
             for (off = -1; off <= 1; off++) {
                 duel_world w;
-                duel_lanes lanes;
-                nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
                 int64_t d = (int64_t)850 * (2 * m - 1) + off;
                 /* on the diagonal the offset is d / sqrt(2) on each axis, rounded down */
                 int64_t dx = diag ? d * 46341 / 65536 : d, dy = diag ? dx : 0;
@@ -273,11 +280,7 @@ static void test_golden_simd_thresholds(void **state)
                 w.robot[1].y = (int32_t)(DUEL_FIX(DUEL_RADIUS) + dy);
                 w.robot[0].heading = (duel_angle)(m * 2654435761u);
                 w.robot[1].heading = (duel_angle)(m * 40503u);
-                for (side = 0; side < 2; side++)
-                    duel_sense(&w, side, scalar[side]);
-                lanes.mask = ~0u;
-                assert_int_equal(duel_sense_both(&w, &lanes, both[0], both[1]), 0);
-                if (memcmp(both, scalar, sizeof both) != 0) {
+                if (tg_paths_differ(&w)) {
                     print_error("d = %lld (m = %d, diagonal %d): the AVX2 sensing differs\n", (long long)d, m, diag);
                     fail();
                 }
@@ -289,9 +292,6 @@ static void test_golden_simd_thresholds(void **state)
         for (m = 0; m < 3; m++)
             for (off = 10; off <= 590; off += 5) {
                 duel_world w;
-                duel_lanes lanes;
-                nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
-                int r;
                 assert_int_equal(duel_world_init(&w, DUEL_TRAINING), DUEL_OK);
                 w.robot[0].x = side % 2 == 0 ? DUEL_FIX(off) : DUEL_FIX(200 + 100 * m);
                 w.robot[0].y = side % 2 == 0 ? DUEL_FIX(200 + 100 * m) : DUEL_FIX(off);
@@ -299,11 +299,7 @@ static void test_golden_simd_thresholds(void **state)
                 w.robot[1].x = DUEL_FIX(590 - off);
                 w.robot[1].y = w.robot[0].y;
                 w.robot[1].heading = (duel_angle)(side ^ 2) << 30;
-                for (r = 0; r < 2; r++)
-                    duel_sense(&w, r, scalar[r]);
-                lanes.mask = ~0u;
-                assert_int_equal(duel_sense_both(&w, &lanes, both[0], both[1]), 0);
-                if (memcmp(both, scalar, sizeof both) != 0) {
+                if (tg_paths_differ(&w)) {
                     print_error("heading %d, row %d, at %d: the AVX2 sensing differs\n", side, m, off);
                     fail();
                 }
