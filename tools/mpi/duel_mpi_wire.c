@@ -42,26 +42,6 @@ void duel_wire_store_free(duel_wire_store *s)
 }
 
 static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m,
-                                 size_t *m_cap);
-
-int duel_wire_work_take(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m,
-                        size_t *m_cap)
-{
-    size_t i;
-    if (duel_wire_work_parse(s, buf, len, h, m, m_cap) == 0)
-        return 0;
-    /* refused: the caller keeps buf, so nothing may point into it (the fuzzer found the networks a bad message
-     * named before its error still pointing there) */
-    for (i = 0; i < s->cap; i++)
-        if (s->nets[i].blob != NULL && (uintptr_t)s->nets[i].blob >= (uintptr_t)buf &&
-            (uintptr_t)s->nets[i].blob < (uintptr_t)buf + len) {
-            s->nets[i].blob = NULL;
-            s->nets[i].len = 0;
-        }
-    return -1;
-}
-
-static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m,
                                  size_t *m_cap)
 {
     size_t pos = sizeof *h, i;
@@ -110,6 +90,23 @@ static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, du
         return -1;
     s->bufs[s->n_bufs++] = buf; /* the blobs live in it until the batch changes */
     return 0;
+}
+
+int duel_wire_work_take(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m,
+                        size_t *m_cap)
+{
+    size_t i;
+    if (duel_wire_work_parse(s, buf, len, h, m, m_cap) == 0)
+        return 0;
+    /* refused: the caller keeps buf, so nothing may point into it (the fuzzer found the networks a bad message
+     * named before its error still pointing there) */
+    for (i = 0; i < s->cap; i++)
+        if (s->nets[i].blob != NULL && (uintptr_t)s->nets[i].blob >= (uintptr_t)buf &&
+            (uintptr_t)s->nets[i].blob < (uintptr_t)buf + len) {
+            s->nets[i].blob = NULL;
+            s->nets[i].len = 0;
+        }
+    return -1;
 }
 
 int duel_wire_result_read(const uint8_t *buf, size_t len, uint64_t batch, size_t from, size_t count,
