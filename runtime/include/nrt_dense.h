@@ -1,0 +1,40 @@
+/* nrt_dense.h - a faster nrt_step for small networks on x86-64 hosts: the weights as a dense matrix, stepped with AVX2. */
+#ifndef NRT_DENSE_H
+#define NRT_DENSE_H
+
+/*
+ * One more implementation of nrt_step (nrt.h), for hosts only: the node
+ * sums as a matrix-vector product, 16 connections per vpmaddwd, instead of
+ * one connection list walked an entry at a time. The step is the same
+ * synchronous propagation and every sum the same exact integer, so the
+ * activations are identical to nrt_step's (tests/runtime/test_dense.c
+ * compares them on random networks). A network qualifies when it has at most
+ * NRT_DENSE_MAX_NODES nodes, no two connections with the same source and
+ * target, and the dense product is estimated to cost less than the list;
+ * a processor without AVX2, or a build for anything but x86-64 (or with
+ * NRT_NO_AVX2 defined), has no dense step and nrt_dense_make says so.
+ */
+
+#include "nrt.h"
+
+#define NRT_DENSE_MAX_NODES 64 /* columns: every node, in blocks of 16 */
+
+typedef struct nrt_dense {
+    /* row j (node n_inputs + j): the weight from each node, 0 where there is
+     * no connection, blocks * 16 entries a row; rows in groups of eight */
+    nrt_w12 w[NRT_DENSE_MAX_NODES * NRT_DENSE_MAX_NODES];
+    uint16_t rows;   /* outputs + hidden */
+    uint16_t blocks; /* ceil(n_nodes / 16) */
+} nrt_dense;
+
+/* The dense form of a loaded network into d: NRT_OK, or NRT_E_ARG when the
+ * network does not qualify or there is no dense step here (then step it with
+ * nrt_step). d stays valid while net's weights do; the state stays in net. */
+int nrt_dense_make(nrt_dense *d, const nrt_net *net);
+
+/* Exactly nrt_step(net, nrt_inputs(net), NULL) for the network d was made
+ * from: the inputs are read from nrt_inputs(net), the outputs are at
+ * nrt_outputs(net) afterwards. */
+void nrt_dense_step(const nrt_dense *d, nrt_net *net);
+
+#endif /* NRT_DENSE_H */

@@ -1,0 +1,187 @@
+/* nrt_dense.c - nrt_step as a dense matrix-vector product with AVX2 on x86-64 hosts (nrt_dense.h). */
+#include <string.h>
+
+#include "nrt_dense.h"
+#include "nrt_internal.h"
+
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__) && !defined(NRT_NO_AVX2)
+#include <immintrin.h>
+
+#define NRT_AVX2 __attribute__((target("avx2")))
+
+int nrt_dense_make(nrt_dense *d, const nrt_net *net)
+{
+    uint32_t rows, blocks, j, k = 0, cols;
+    if (d == NULL || net == NULL || net->n_nodes > NRT_DENSE_MAX_NODES || net->n_nodes <= net->n_inputs ||
+        !__builtin_cpu_supports("avx2"))
+        return NRT_E_ARG;
+    rows = (uint32_t)net->n_nodes - net->n_inputs;
+    blocks = ((uint32_t)net->n_nodes + 15u) / 16u;
+    cols = 16u * blocks;
+    /* Worth it? The list costs about 10 instructions a connection and 12 a
+     * node (bench/duel_instructions.sh); a row of the matrix about 5 a block
+     * of 16 columns and 5 for its sum and sigmoid, whatever the connections. */
+    if (((rows + 7u) & ~7u) * (5u * blocks + 5u) >= 10u * net->n_conns + 12u * rows)
+        return NRT_E_ARG;
+    /* whole groups of eight rows, the ones past the last all zero */
+    memset(d->w, 0, sizeof d->w[0] * ((rows + 7u) & ~7u) * cols);
+    for (j = 0; j < rows; j++)
+        for (; k < net->end[j]; k++) {
+            nrt_w12 *cell = &d->w[j * cols + net->src[k]];
+            /* two connections between the same nodes: the list's sum has
+             * both products, a cell holds one weight */
+            if (*cell != 0)
+                return NRT_E_ARG;
+            *cell = net->weight[k];
+        }
+    d->rows = (uint16_t)rows;
+    d->blocks = (uint16_t)blocks;
+    return NRT_OK;
+}
+
+/* One row's sum in two halves, lanes of 32 bits: hi += m >> 16 and lo += m
+ * & 0xFFFF for each vpmaddwd lane m = w_i a_i + w_(i+1) a_(i+1). Two
+ * products of at most 2^30 - 2^15 each (|w| <= 32767, |a| <= 32768) keep m
+ * below 2^31, exact in 32 bits, and m = hi * 2^16 + lo exactly; the halves
+ * add up without overflow (|hi| <= 2^15, lo < 2^16 a block). */
+#define NRT_DENSE_ROW(row, v, blocks, hi, lo)                                                                      \
+    do {                                                                                                            \
+        uint32_t b_;                                                                                                \
+        hi = lo = _mm256_setzero_si256();                                                                           \
+        for (b_ = 0; b_ < (blocks); b_++) {                                                                         \
+            __m256i m_ = _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(const void *)((row) + 16u * b_)), \
+                                           (v)[b_]);                                                                \
+            hi = _mm256_add_epi32(hi, _mm256_srai_epi32(m_, 16));                                                   \
+            lo = _mm256_add_epi32(lo, _mm256_and_si256(m_, _mm256_set1_epi32(0xFFFF)));                             \
+        }                                                                                                           \
+    } while (0)
+
+/* The eight lanes of each of x[0..7] added up: lane r of the result is the
+ * sum of x[r]. */
+NRT_AVX2 static inline __m256i nrt_dense_sum8(const __m256i x[8])
+{
+    __m256i u0 = _mm256_hadd_epi32(_mm256_hadd_epi32(x[0], x[1]), _mm256_hadd_epi32(x[2], x[3]));
+    __m256i u1 = _mm256_hadd_epi32(_mm256_hadd_epi32(x[4], x[5]), _mm256_hadd_epi32(x[6], x[7]));
+    return _mm256_add_epi32(_mm256_permute2x128_si256(u0, u1, 0x20), _mm256_permute2x128_si256(u0, u1, 0x31));
+}
+
+/* Table entries i and i + 1 as one 32-bit word (i in the low half: x86 is little endian),
+ * for eight indices i <= 191. By scalar loads: vpgatherdd was a fifth of
+ * the step's time here (perf; it is microcoded on processors with the
+ * gather data sampling mitigation). */
+NRT_AVX2 static inline __m256i nrt_dense_entries8(__m256i i)
+{
+    uint32_t idx[8], e[8];
+    int r;
+    _mm256_storeu_si256((__m256i *)(void *)idx, i);
+    for (r = 0; r < 8; r++)
+        memcpy(&e[r], nrt_sig_table + idx[r], sizeof e[r]);
+    return _mm256_setr_epi32((int32_t)e[0], (int32_t)e[1], (int32_t)e[2], (int32_t)e[3], (int32_t)e[4], (int32_t)e[5],
+                             (int32_t)e[6], (int32_t)e[7]);
+}
+
+/* nrt_sig_eval of eight sums given as halves, sum = hi * 2^16 + lo (|hi| <=
+ * 2^20, 0 <= lo < 2^21), as eight Q1.15 values in the low 128 bits. hi
+ * clamped to +-2^14 keeps every sum below 2^31 in magnitude, exact where
+ * |sum| < 2^30 - 2^21 and of the right sign with |sum| beyond NRT_SIG_LIMIT
+ * (2^28.6) elsewhere, which saturates the same. The table lookup is
+ * nrt_sig_eval's integer arithmetic, in 32-bit lanes: (hi - lo) * frac <
+ * 2^15 * 2^16. */
+NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
+{
+    const __m256i limit = _mm256_set1_epi32((int32_t)NRT_SIG_LIMIT), top = _mm256_set1_epi32(32768);
+    __m256i h = _mm256_max_epi32(_mm256_min_epi32(hi, _mm256_set1_epi32(1 << 14)), _mm256_set1_epi32(-(1 << 14)));
+    __m256i sum = _mm256_add_epi32(_mm256_slli_epi32(h, 16), lo);
+    __m256i x = _mm256_min_epi32(_mm256_abs_epi32(sum), limit);
+    __m256i sat = _mm256_cmpeq_epi32(x, limit);
+    __m256i i = _mm256_min_epi32(_mm256_srli_epi32(x, NRT_SIG_SHIFT), _mm256_set1_epi32(191));
+    __m256i frac = _mm256_and_si256(_mm256_srli_epi32(x, NRT_SIG_SHIFT - 16), _mm256_set1_epi32(0xFFFF));
+    __m256i pair = nrt_dense_entries8(i);
+    __m256i t0 = _mm256_and_si256(pair, _mm256_set1_epi32(0xFFFF)), t1 = _mm256_srli_epi32(pair, 16);
+    __m256i y = _mm256_add_epi32(t0, _mm256_srai_epi32(_mm256_mullo_epi32(_mm256_sub_epi32(t1, t0), frac), 16));
+    __m256i neg = _mm256_cmpgt_epi32(_mm256_setzero_si256(), sum), out;
+    y = _mm256_blendv_epi8(y, top, sat);
+    out = _mm256_blendv_epi8(_mm256_min_epi32(y, _mm256_set1_epi32(32767)), _mm256_sub_epi32(top, y), neg);
+    return _mm256_castsi256_si128(_mm256_permute4x64_epi64(_mm256_packs_epi32(out, out), 0x08));
+}
+
+/* Up to this many rows, each row's sum is reduced on its own and its
+ * sigmoid taken scalar; more, eight rows share each reduction and sigmoid. */
+#define NRT_DENSE_FEW 4
+
+/* The rows' new activations into next[]: a[] holds the step's activations
+ * padded with zeros to whole blocks (the padding columns' weights are 0
+ * too); the matrix has whole groups of eight rows, those past d->rows all
+ * zero. */
+NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const nrt_dense *d, const nrt_q15 *a,
+                                                                          nrt_q15 *next, uint32_t blocks)
+{
+    __m256i v[NRT_DENSE_MAX_NODES / 16], hi[8], lo[8];
+    nrt_q15 out[NRT_DENSE_MAX_NODES];
+    const nrt_w12 *row = d->w;
+    uint32_t b, j, r, rows = d->rows;
+    for (b = 0; b < blocks; b++)
+        v[b] = _mm256_loadu_si256((const __m256i *)(const void *)(a + 16u * b));
+    if (rows <= NRT_DENSE_FEW) {
+        for (j = 0; j < rows; j++, row += 16u * blocks) {
+            __m256i h, l;
+            __m128i q;
+            NRT_DENSE_ROW(row, v, blocks, h, l);
+            h = _mm256_hadd_epi32(h, l);
+            h = _mm256_hadd_epi32(h, h); /* lanes 0 and 4: hi, lanes 1 and 5: lo */
+            q = _mm_add_epi32(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
+            next[j] = nrt_sig_eval((int64_t)_mm_extract_epi32(q, 0) * 65536 + _mm_extract_epi32(q, 1));
+        }
+        return;
+    }
+    for (j = 0; j < rows; j += 8u) {
+        for (r = 0; r < 8u; r++, row += 16u * blocks)
+            NRT_DENSE_ROW(row, v, blocks, hi[r], lo[r]);
+        _mm_storeu_si128((__m128i *)(void *)(out + j), nrt_dense_sig8(nrt_dense_sum8(hi), nrt_dense_sum8(lo)));
+    }
+    for (j = 0; j < rows; j++) /* a loop the compiler vectorises, not a call */
+        next[j] = out[j];
+}
+
+NRT_AVX2 void nrt_dense_step(const nrt_dense *d, nrt_net *net)
+{
+    nrt_q15 a[NRT_DENSE_MAX_NODES], *next = net->act[net->cur ^ 1u] + net->n_inputs;
+    const nrt_q15 *prev = net->act[net->cur];
+    uint32_t blocks = d->blocks, k, n = net->n_nodes;
+    _mm256_storeu_si256((__m256i *)(void *)(a + 16u * (blocks - 1u)), _mm256_setzero_si256());
+    for (k = 0; k < n; k++)
+        a[k] = prev[k];
+    /* a constant block count for each, so that the compiler unrolls */
+    switch (blocks) {
+    case 1:
+        nrt_dense_rows(d, a, next, 1);
+        break;
+    case 2:
+        nrt_dense_rows(d, a, next, 2);
+        break;
+    case 3:
+        nrt_dense_rows(d, a, next, 3);
+        break;
+    default:
+        nrt_dense_rows(d, a, next, 4);
+        break;
+    }
+    net->cur ^= 1u;
+}
+
+#else /* no dense step on this processor or compiler */
+
+int nrt_dense_make(nrt_dense *d, const nrt_net *net)
+{
+    (void)d;
+    (void)net;
+    return NRT_E_ARG;
+}
+
+void nrt_dense_step(const nrt_dense *d, nrt_net *net)
+{
+    (void)d;
+    (void)net;
+}
+
+#endif

@@ -1,0 +1,247 @@
+/* test_dense.c - the dense AVX2 step (nrt_dense.h) against nrt_step: the same activations on random networks, and what it refuses. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "nrt.h"
+#include "nrt_dense.h"
+
+#define TD_MAX_CONNS (NRT_DENSE_MAX_NODES * NRT_DENSE_MAX_NODES)
+
+/* A network built in place (nrt_net's fields are public): what nrt_load
+ * would give for the same connections. */
+typedef struct td_net {
+    nrt_net net;
+    nrt_w12 weight[TD_MAX_CONNS];
+    uint16_t src[TD_MAX_CONNS], end[NRT_DENSE_MAX_NODES];
+    nrt_q15 act[2][NRT_DENSE_MAX_NODES + 1];
+} td_net;
+
+static uint32_t td_next(uint32_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 17;
+    *s ^= *s << 5;
+    return *s;
+}
+
+/* Weights and inputs at the extremes a quarter of the time: the sums reach
+ * the saturation of the sigmoid, and the exact pair bound (2^31 - 2^16). */
+static int16_t td_value(uint32_t *s, int lowest)
+{
+    uint32_t r = td_next(s);
+    switch (r & 7u) {
+    case 0:
+        return 32767;
+    case 1:
+        return (int16_t)lowest;
+    default:
+        return (int16_t)(int32_t)((r >> 8) % 65535u) - 32767;
+    }
+}
+
+/* Every node sees each earlier node and itself with probability density /
+ * 8 (recurrent links too, as nrt_step allows: any non-input target). */
+static void td_make(td_net *t, uint32_t n_in, uint32_t n_out, uint32_t n_hid, uint32_t density, uint32_t *seed)
+{
+    uint32_t n = n_in + n_out + n_hid, j, i, k = 0;
+    memset(t, 0, sizeof *t);
+    for (j = 0; j < n - n_in; j++) {
+        for (i = 0; i < n; i++)
+            if ((td_next(seed) & 7u) < density) {
+                t->src[k] = (uint16_t)i;
+                t->weight[k] = td_value(seed, -32767);
+                k++;
+            }
+        t->end[j] = (uint16_t)k;
+    }
+    t->net.n_inputs = (uint16_t)n_in;
+    t->net.n_outputs = (uint16_t)n_out;
+    t->net.n_hidden = (uint16_t)n_hid;
+    t->net.n_nodes = (uint16_t)n;
+    t->net.n_conns = (uint16_t)k;
+    t->net.weight = t->weight;
+    t->net.src = t->src;
+    t->net.end = t->end;
+    t->net.act[0] = t->act[0];
+    t->net.act[1] = t->act[1];
+}
+
+static int td_available(void)
+{
+    static nrt_dense d;
+    td_net *t = test_malloc(sizeof *t);
+    uint32_t seed = 1;
+    int ok;
+    td_make(t, 13, 3, 0, 8, &seed);
+    ok = nrt_dense_make(&d, &t->net) == NRT_OK;
+    test_free(t);
+    return ok;
+}
+
+/* 400 random networks of 2-64 nodes, 12 steps each with new random inputs:
+ * after every step all activations of both copies are equal. */
+static void test_dense_matches_step(void **state)
+{
+    static nrt_dense d;
+    td_net *a = test_malloc(sizeof *a), *b = test_malloc(sizeof *b);
+    uint32_t seed = 0x2545F491u, trial, made = 0, big = 0;
+    (void)state;
+    if (!td_available()) {
+        test_free(a);
+        test_free(b);
+        skip();
+    }
+    for (trial = 0; trial < 400; trial++) {
+        uint32_t n_in = 1 + td_next(&seed) % 20, n_out = 1 + td_next(&seed) % 6;
+        uint32_t room = NRT_DENSE_MAX_NODES - n_in - n_out, n_hid = td_next(&seed) % (room + 1);
+        uint32_t density = 3 + td_next(&seed) % 6, s1 = seed, s2 = seed, step, i;
+        td_make(a, n_in, n_out, n_hid, density, &s1);
+        td_make(b, n_in, n_out, n_hid, density, &s2);
+        seed = s1;
+        if (nrt_dense_make(&d, &b->net) != NRT_OK)
+            continue;
+        made++;
+        big += b->net.n_nodes - b->net.n_inputs > 4;
+        for (step = 0; step < 12; step++) {
+            nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_inputs(&b->net);
+            for (i = 0; i < n_in; i++)
+                ia[i] = ib[i] = td_value(&seed, -32768);
+            nrt_step(&a->net, ia, NULL);
+            nrt_dense_step(&d, &b->net);
+            assert_int_equal(a->net.cur, b->net.cur);
+            assert_memory_equal(a->net.act[a->net.cur], b->net.act[b->net.cur], 2u * a->net.n_nodes);
+        }
+    }
+    /* the comparison covered both ways of taking the sigmoid */
+    assert_true(made >= 300);
+    assert_true(big >= 200 && made - big >= 20);
+    test_free(a);
+    test_free(b);
+}
+
+/* The largest sums there are: every weight 32767 or -32767 from every node,
+ * every activation -32768 or 32767, in one 64-node network. */
+static void test_dense_extremes(void **state)
+{
+    static nrt_dense d;
+    td_net *a = test_malloc(sizeof *a), *b = test_malloc(sizeof *b);
+    uint32_t sign, i, j;
+    (void)state;
+    if (!td_available()) {
+        test_free(a);
+        test_free(b);
+        skip();
+    }
+    for (sign = 0; sign < 4; sign++) {
+        uint32_t seed = 7;
+        td_make(a, 16, 8, 40, 8, &seed);
+        for (j = 0; j < a->net.n_conns; j++)
+            a->weight[j] = (sign & 1u) ? -32767 : 32767;
+        memcpy(b, a, sizeof *a);
+        b->net.weight = b->weight;
+        b->net.src = b->src;
+        b->net.end = b->end;
+        b->net.act[0] = b->act[0];
+        b->net.act[1] = b->act[1];
+        assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
+        for (j = 0; j < 3; j++) {
+            nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_inputs(&b->net);
+            for (i = 0; i < 16; i++)
+                ia[i] = ib[i] = (sign & 2u) ? -32768 : 32767;
+            nrt_step(&a->net, ia, NULL);
+            nrt_dense_step(&d, &b->net);
+            assert_memory_equal(a->net.act[a->net.cur], b->net.act[b->net.cur], 2u * a->net.n_nodes);
+        }
+    }
+    test_free(a);
+    test_free(b);
+}
+
+/* One input (of 8) into 8 outputs (the eight-row sigmoid) or 3 (the scalar one)
+ * with weights spread over the whole range: every input value from -32768
+ * to 32767 puts the sums on every segment of the sigmoid's table, its last
+ * entries and its saturation included. */
+static void test_dense_sigmoid_sweep(void **state)
+{
+    static const nrt_w12 w[8] = {32767, -32767, 4096, -4096, 517, -1, 24000, -9000};
+    static nrt_dense d;
+    td_net *a = test_malloc(sizeof *a), *b = test_malloc(sizeof *b);
+    uint32_t n_out, j;
+    int32_t x;
+    (void)state;
+    if (!td_available()) {
+        test_free(a);
+        test_free(b);
+        skip();
+    }
+    for (n_out = 3; n_out <= 8; n_out += 5) {
+        uint32_t seed = 5;
+        uint32_t k = 0, i;
+        /* inputs 1-7 with weight 0: connections enough for the dense form */
+        td_make(a, 8, n_out, 0, 0, &seed);
+        for (j = 0; j < n_out; j++) {
+            for (i = 0; i < 8; i++, k++) {
+                a->src[k] = (uint16_t)i;
+                a->weight[k] = i == 0 ? w[j] : 0;
+            }
+            a->end[j] = (uint16_t)k;
+        }
+        a->net.n_conns = (uint16_t)k;
+        memcpy(b, a, sizeof *a);
+        b->net.weight = b->weight;
+        b->net.src = b->src;
+        b->net.end = b->end;
+        b->net.act[0] = b->act[0];
+        b->net.act[1] = b->act[1];
+        assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
+        for (x = -32768; x <= 32767; x++) {
+            nrt_inputs(&a->net)[0] = nrt_inputs(&b->net)[0] = (nrt_q15)x;
+            nrt_step(&a->net, nrt_inputs(&a->net), NULL);
+            nrt_dense_step(&d, &b->net);
+            assert_memory_equal(nrt_outputs(&a->net), nrt_outputs(&b->net), 2u * n_out);
+        }
+    }
+    test_free(a);
+    test_free(b);
+}
+
+/* Too many nodes, two connections between the same nodes, a sparse network
+ * the list steps faster, NULL: refused. */
+static void test_dense_refuses(void **state)
+{
+    static nrt_dense d;
+    td_net *t = test_malloc(sizeof *t);
+    uint32_t seed = 3;
+    (void)state;
+    if (!td_available()) {
+        test_free(t);
+        skip();
+    }
+    assert_int_equal(nrt_dense_make(NULL, &t->net), NRT_E_ARG);
+    assert_int_equal(nrt_dense_make(&d, NULL), NRT_E_ARG);
+    td_make(t, 13, 3, 0, 8, &seed);
+    t->src[1] = t->src[0];
+    assert_int_equal(nrt_dense_make(&d, &t->net), NRT_E_ARG);
+    td_make(t, 13, 3, 0, 8, &seed);
+    t->net.n_nodes = NRT_DENSE_MAX_NODES + 1;
+    assert_int_equal(nrt_dense_make(&d, &t->net), NRT_E_ARG);
+    td_make(t, 13, 3, 48, 0, &seed); /* 51 rows, no connections */
+    assert_int_equal(nrt_dense_make(&d, &t->net), NRT_E_ARG);
+    test_free(t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_dense_matches_step),
+        cmocka_unit_test(test_dense_extremes),
+        cmocka_unit_test(test_dense_sigmoid_sweep),
+        cmocka_unit_test(test_dense_refuses),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
