@@ -71,6 +71,17 @@ static void td_make(td_net *t, uint32_t n_in, uint32_t n_out, uint32_t n_hid, ui
     t->net.act[1] = t->act[1];
 }
 
+/* b: a copy of a, its net pointing at b's own arrays */
+static void td_copy(td_net *b, const td_net *a)
+{
+    memcpy(b, a, sizeof *a);
+    b->net.weight = b->weight;
+    b->net.src = b->src;
+    b->net.end = b->end;
+    b->net.act[0] = b->act[0];
+    b->net.act[1] = b->act[1];
+}
+
 static int td_available(void)
 {
     static nrt_dense d;
@@ -142,12 +153,7 @@ static void test_dense_extremes(void **state)
         td_make(a, 16, 8, 40, 8, &seed);
         for (j = 0; j < a->net.n_conns; j++)
             a->weight[j] = (sign & 1u) ? -32767 : 32767;
-        memcpy(b, a, sizeof *a);
-        b->net.weight = b->weight;
-        b->net.src = b->src;
-        b->net.end = b->end;
-        b->net.act[0] = b->act[0];
-        b->net.act[1] = b->act[1];
+        td_copy(b, a);
         assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
         for (j = 0; j < 3; j++) {
             nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_inputs(&b->net);
@@ -192,12 +198,7 @@ static void test_dense_sigmoid_sweep(void **state)
             a->end[j] = (uint16_t)k;
         }
         a->net.n_conns = (uint16_t)k;
-        memcpy(b, a, sizeof *a);
-        b->net.weight = b->weight;
-        b->net.src = b->src;
-        b->net.end = b->end;
-        b->net.act[0] = b->act[0];
-        b->net.act[1] = b->act[1];
+        td_copy(b, a);
         assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
         for (x = -32768; x <= 32767; x++) {
             nrt_inputs(&a->net)[0] = nrt_inputs(&b->net)[0] = (nrt_q15)x;
