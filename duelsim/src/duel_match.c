@@ -16,16 +16,6 @@ static const nrt_q15 *duel_act(duel_controller *c, const nrt_q15 in[DUEL_N_INPUT
     return buf;
 }
 
-#if DUEL_HAVE_AVX2
-/* The same for a network with a dense form (nrt_dense.h), whose inputs are
- * in its input slots: the same outputs, faster for small networks. */
-static const nrt_q15 *duel_act_dense(const nrt_dense *dense, nrt_net *net)
-{
-    nrt_dense_step(dense, net);
-    return nrt_outputs(net);
-}
-#endif
-
 static int duel_controller_ok(const duel_controller *c)
 {
     if (c == NULL)
@@ -44,7 +34,7 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     duel_event ev;
     duel_lanes lanes;
 #if DUEL_HAVE_AVX2
-    const nrt_dense *dense[2] = {NULL, NULL};
+    nrt_dense *dense[2] = {NULL, NULL};
     nrt_dense dense_of[2];
 #endif
     int err, side;
@@ -76,16 +66,28 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     while (w.outcome == DUEL_RUNNING) {
         /* 1. both sense the state at t; 2. both networks propagate once */
         /* a network's sensors go straight into its input slots */
+#if DUEL_HAVE_AVX2
+        /* (a dense form holds its network's state) */
+        for (side = 0; side < 2; side++) {
+            const duel_controller *c = side == DUEL_WEST ? west : east;
+            in[side] = dense[side] != NULL ? nrt_dense_inputs(dense[side])
+                                           : (c->net != NULL ? nrt_inputs(c->net) : in_buf[side]);
+        }
+#else
         in[DUEL_WEST] = west->net != NULL ? nrt_inputs(west->net) : in_buf[DUEL_WEST];
         in[DUEL_EAST] = east->net != NULL ? nrt_inputs(east->net) : in_buf[DUEL_EAST];
+#endif
         if (duel_sense_both(&w, &lanes, in[DUEL_WEST], in[DUEL_EAST]) != 0)
             for (side = 0; side < 2; side++)
                 duel_sense(&w, side, in[side]);
 #if DUEL_HAVE_AVX2
-        out[DUEL_WEST] = dense[DUEL_WEST] != NULL ? duel_act_dense(dense[DUEL_WEST], west->net)
-                                                  : duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
-        out[DUEL_EAST] = dense[DUEL_EAST] != NULL ? duel_act_dense(dense[DUEL_EAST], east->net)
-                                                  : duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
+        for (side = 0; side < 2; side++)
+            if (dense[side] != NULL) {
+                nrt_dense_step(dense[side]);
+                out[side] = nrt_dense_outputs(dense[side]);
+            } else {
+                out[side] = duel_act(side == DUEL_WEST ? west : east, in[side], out_buf[side]);
+            }
 #else
         out[DUEL_WEST] = duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
         out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
@@ -107,6 +109,13 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
                   &ev);
         }
     }
+#if DUEL_HAVE_AVX2
+    /* the networks end as nrt_step would have left them */
+    if (dense[DUEL_WEST] != NULL)
+        nrt_dense_save(dense[DUEL_WEST], west->net);
+    if (dense[DUEL_EAST] != NULL)
+        nrt_dense_save(dense[DUEL_EAST], east->net);
+#endif
     res->outcome = w.outcome;
     res->steps = w.t;
     for (side = 0; side < 2; side++) {

@@ -23,18 +23,42 @@ typedef struct nrt_dense {
     /* row j (node n_inputs + j): the weight from each node, 0 where there is
      * no connection, blocks * 16 entries a row; rows in groups of eight */
     nrt_w12 w[NRT_DENSE_MAX_NODES * NRT_DENSE_MAX_NODES];
+    /* the network's state while the dense form steps it: nrt_net's two
+     * activation buffers, padded to whole blocks so that a block loads
+     * straight from them (and with room for a last group of eight rows) */
+    nrt_q15 act[2][NRT_DENSE_MAX_NODES + 16];
     uint16_t rows;   /* outputs + hidden */
     uint16_t blocks; /* ceil(n_nodes / 16) */
+    uint16_t n_inputs, n_nodes;
+    uint8_t cur;     /* act[cur]: the current activations */
 } nrt_dense;
 
-/* The dense form of a loaded network into d: NRT_OK, or NRT_E_ARG when the
- * network does not qualify or there is no dense step here (then step it with
- * nrt_step). d stays valid while net's weights do; the state stays in net. */
+/* The dense form of a loaded network into d, with a copy of its state (its
+ * activations): NRT_OK, or NRT_E_ARG when the network does not qualify or
+ * there is no dense step here (then step it with nrt_step). From then on
+ * the state lives in d: write the inputs through nrt_dense_inputs, read the
+ * outputs at nrt_dense_outputs, and nrt_dense_save puts the state back into
+ * the network. d stays valid while net's weights do. */
 int nrt_dense_make(nrt_dense *d, const nrt_net *net);
 
-/* Exactly nrt_step(net, nrt_inputs(net), NULL) for the network d was made
- * from: the inputs are read from nrt_inputs(net), the outputs are at
- * nrt_outputs(net) afterwards. */
-void nrt_dense_step(const nrt_dense *d, nrt_net *net);
+/* The input slots of the current activations (nrt_inputs for d's state). */
+static inline nrt_q15 *nrt_dense_inputs(nrt_dense *d)
+{
+    return d->act[d->cur];
+}
+
+/* The outputs of the last step (nrt_outputs for d's state). */
+static inline const nrt_q15 *nrt_dense_outputs(const nrt_dense *d)
+{
+    return d->act[d->cur] + d->n_inputs;
+}
+
+/* One step of d's state, exactly nrt_step(net, nrt_inputs(net), NULL) for
+ * the network d was made from in that state. */
+void nrt_dense_step(nrt_dense *d);
+
+/* d's state into net (the network d was made from): net then holds what
+ * nrt_step would have left in it. */
+void nrt_dense_save(const nrt_dense *d, nrt_net *net);
 
 #endif /* NRT_DENSE_H */

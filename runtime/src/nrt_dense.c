@@ -36,7 +36,21 @@ int nrt_dense_make(nrt_dense *d, const nrt_net *net)
         }
     d->rows = (uint16_t)rows;
     d->blocks = (uint16_t)blocks;
+    d->n_inputs = net->n_inputs;
+    d->n_nodes = net->n_nodes;
+    /* the padding is zero, and only ever meets zero weights */
+    memset(d->act, 0, sizeof d->act);
+    memcpy(d->act[0], net->act[0], 2u * net->n_nodes);
+    memcpy(d->act[1], net->act[1], 2u * net->n_nodes);
+    d->cur = (uint8_t)net->cur;
     return NRT_OK;
+}
+
+void nrt_dense_save(const nrt_dense *d, nrt_net *net)
+{
+    memcpy(net->act[0], d->act[0], 2u * d->n_nodes);
+    memcpy(net->act[1], d->act[1], 2u * d->n_nodes);
+    net->cur = d->cur;
 }
 
 /* One row's sum in two halves, lanes of 32 bits: hi += m >> 16 and lo += m
@@ -105,54 +119,51 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
     return _mm256_castsi256_si128(_mm256_permute4x64_epi64(_mm256_packs_epi32(out, out), 0x08));
 }
 
-/* Up to this many rows, each row's sum is reduced on its own and its
- * sigmoid taken scalar; more, eight rows share each reduction and sigmoid. */
+/* Up to this many rows, one reduction takes the sums of all of them (four
+ * his, four los); more, eight rows share each reduction. Either way eight
+ * sigmoids at once. */
 #define NRT_DENSE_FEW 4
 
 /* The rows' new activations into next[]: a[] holds the step's activations
  * padded with zeros to whole blocks (the padding columns' weights are 0
  * too); the matrix has whole groups of eight rows, those past d->rows all
- * zero. */
+ * zero. The stores write whole groups (of four or eight): the values past
+ * the last row land in the buffer's padding, beyond the last node, whose
+ * columns have no weight in any row. */
 NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const nrt_dense *d, const nrt_q15 *a,
                                                                           nrt_q15 *next, uint32_t blocks)
 {
     __m256i v[NRT_DENSE_MAX_NODES / 16], hi[8], lo[8];
-    nrt_q15 out[NRT_DENSE_MAX_NODES];
     const nrt_w12 *row = d->w;
     uint32_t b, j, r, rows = d->rows;
     for (b = 0; b < blocks; b++)
         v[b] = _mm256_loadu_si256((const __m256i *)(const void *)(a + 16u * b));
     if (rows <= NRT_DENSE_FEW) {
-        for (j = 0; j < rows; j++, row += 16u * blocks) {
-            __m256i h, l;
-            __m128i q;
-            NRT_DENSE_ROW(row, v, blocks, h, l);
-            h = _mm256_hadd_epi32(h, l);
-            h = _mm256_hadd_epi32(h, h); /* lanes 0 and 4: hi, lanes 1 and 5: lo */
-            q = _mm_add_epi32(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
-            next[j] = nrt_sig_eval((int64_t)_mm_extract_epi32(q, 0) * 65536 + _mm_extract_epi32(q, 1));
+        __m256i s;
+        /* x[r]: row r's hi, x[4 + r] its lo; rows past the last are zero */
+        for (r = 0; r < NRT_DENSE_FEW; r++, row += 16u * blocks) {
+            if (r < rows)
+                NRT_DENSE_ROW(row, v, blocks, hi[r], hi[4 + r]);
+            else
+                hi[r] = hi[4 + r] = _mm256_setzero_si256();
         }
+        s = nrt_dense_sum8(hi); /* lanes 0-3: the rows' hi, 4-7: their lo */
+        _mm_storel_epi64((__m128i *)(void *)next, nrt_dense_sig8(s, _mm256_permute4x64_epi64(s, 0x4E)));
         return;
     }
     for (j = 0; j < rows; j += 8u) {
         for (r = 0; r < 8u; r++, row += 16u * blocks)
             NRT_DENSE_ROW(row, v, blocks, hi[r], lo[r]);
-        _mm_storeu_si128((__m128i *)(void *)(out + j), nrt_dense_sig8(nrt_dense_sum8(hi), nrt_dense_sum8(lo)));
+        _mm_storeu_si128((__m128i *)(void *)(next + j), nrt_dense_sig8(nrt_dense_sum8(hi), nrt_dense_sum8(lo)));
     }
-    for (j = 0; j < rows; j++) /* a loop the compiler vectorises, not a call */
-        next[j] = out[j];
 }
 
-NRT_AVX2 void nrt_dense_step(const nrt_dense *d, nrt_net *net)
+NRT_AVX2 void nrt_dense_step(nrt_dense *d)
 {
-    nrt_q15 a[NRT_DENSE_MAX_NODES], *next = net->act[net->cur ^ 1u] + net->n_inputs;
-    const nrt_q15 *prev = net->act[net->cur];
-    uint32_t blocks = d->blocks, k, n = net->n_nodes;
-    _mm256_storeu_si256((__m256i *)(void *)(a + 16u * (blocks - 1u)), _mm256_setzero_si256());
-    for (k = 0; k < n; k++)
-        a[k] = prev[k];
+    const nrt_q15 *a = d->act[d->cur];
+    nrt_q15 *next = d->act[d->cur ^ 1u] + d->n_inputs;
     /* a constant block count for each, so that the compiler unrolls */
-    switch (blocks) {
+    switch (d->blocks) {
     case 1:
         nrt_dense_rows(d, a, next, 1);
         break;
@@ -166,7 +177,7 @@ NRT_AVX2 void nrt_dense_step(const nrt_dense *d, nrt_net *net)
         nrt_dense_rows(d, a, next, 4);
         break;
     }
-    net->cur ^= 1u;
+    d->cur ^= 1u;
 }
 
 #else /* no dense step on this processor or compiler */
@@ -178,7 +189,12 @@ int nrt_dense_make(nrt_dense *d, const nrt_net *net)
     return NRT_E_ARG;
 }
 
-void nrt_dense_step(const nrt_dense *d, nrt_net *net)
+void nrt_dense_step(nrt_dense *d)
+{
+    (void)d;
+}
+
+void nrt_dense_save(const nrt_dense *d, nrt_net *net)
 {
     (void)d;
     (void)net;
