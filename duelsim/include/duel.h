@@ -17,6 +17,11 @@
 
 #include "nrt.h"
 
+/* C++ callers link against the C symbols */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define DUEL_SPEC_VERSION 1
 
 /* ---- fixed point ---- */
@@ -145,5 +150,9 @@ int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally);
 
 /* How a game ended, for people: "west wins (collision, more energy)", ... */
 const char *duel_outcome_text(int outcome);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* DUEL_H */

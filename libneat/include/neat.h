@@ -22,6 +22,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* C++ callers link against the C symbols */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- versions ---------------------------------------------------------- */
 #define NEAT_VERSION_MAJOR 0
 #define NEAT_VERSION_MINOR 1
@@ -261,5 +266,9 @@ void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len);
 int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
 
 const char *neat_strerror(int err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* NEAT_H */

@@ -4,6 +4,11 @@
 
 #include "neat.h"
 
+/* C++ callers link against the C symbols */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /*
  * The protocol of Stanley & Miikkulainen (2004), section 5, as fixed by
  * spec duel-world.md ("Coevolution protocol"); the game itself is the
@@ -138,5 +143,9 @@ int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);
 void neat_coev_buf_free(const neat_coev *c, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
 int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* NEAT_COEV_H */

@@ -22,6 +22,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* C++ callers link against the C symbols */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- versions ---------------------------------------------------------- */
 #define NRT_VERSION_MAJOR 1 /* library version: the code */
 #define NRT_VERSION_MINOR 0
@@ -144,6 +149,10 @@ nrt_q15 nrt_sigmoid(int64_t sum);
 #ifndef NRT_NO_STRERROR
 /* A short English description of an nrt_error (host builds only). */
 const char *nrt_strerror(int err);
+#endif
+
+#ifdef __cplusplus
+}
 #endif
 
 #endif /* NRT_H */

@@ -17,6 +17,11 @@
 
 #include "nrt.h"
 
+/* C++ callers link against the C symbols */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define NRT_DENSE_MAX_NODES 64 /* columns: every node, in blocks of 16 */
 
 typedef struct nrt_dense {
@@ -60,5 +65,9 @@ void nrt_dense_step(nrt_dense *d);
 /* d's state into net (the network d was made from): net then holds what
  * nrt_step would have left in it. */
 void nrt_dense_save(const nrt_dense *d, nrt_net *net);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* NRT_DENSE_H */
