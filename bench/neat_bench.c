@@ -142,7 +142,8 @@ static int bench_evolve(const char *task, bench_cfg *cfg, int quiet)
 
 static void bench_usage(FILE *f)
 {
-    fprintf(f, "usage: neat_bench xor|pole|pole-nv|activation [--runs N] [--seed S] [--threads T]\n"
+    fprintf(f, "usage: neat_bench --version | --help\n"
+               "       neat_bench xor|pole|pole-nv|activation [--runs N] [--seed S] [--threads T]\n"
                "                  [--config FILE.ini] [--dump-config] [--quiet] [--verbose]\n"
                "       neat_bench activation [--count-steps N --connections 40|200]\n"
                "Runs NEAT on a benchmark of the NEAT paper (Stanley & Miikkulainen 2002); the last line\n"
@@ -171,6 +172,10 @@ static int bench_main(int argc, char **argv)
     uint64_t runs = 0, threads = 0, seed = 1, count_steps = 0, count_conns = 40;
     int i, have_seed = 0, have_runs = 0, have_threads = 0, quiet = 0, dump = 0, verbose = 0;
 
+    if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
+        printf("neat_bench %s (libneat %d.%d)\n", NEAT_DUEL_VERSION, NEAT_VERSION_MAJOR, NEAT_VERSION_MINOR);
+        return 0;
+    }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         bench_usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;

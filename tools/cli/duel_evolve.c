@@ -4,12 +4,14 @@
 #include <string.h>
 
 #include "duel.h"
+#include "neat.h"
 #include "duel_cli.h"
 #include "duel_mpi.h"
 
 static void duel_usage(FILE *f)
 {
-    fprintf(f, "usage: duel_evolve run --config FILE --out DIR [--set key=value ...] [--seed S] [--generations N] [--threads T] [--quiet] "
+    fprintf(f, "usage: duel_evolve --version | --help\n"
+               "       duel_evolve run --config FILE --out DIR [--set key=value ...] [--seed S] [--generations N] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
                "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
@@ -94,6 +96,12 @@ int main(int argc, char **argv)
         }
         if (duel_mpi_rank() != 0)
             return duel_mpi_finish(duel_mpi_serve(argc - 1, argv + 1, duel_dispatch));
+    }
+    if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
+        /* the project's version (CMakeLists.txt) and the formats this build reads and writes */
+        printf("duel_evolve %s (duel world spec %d, blob format %d, checkpoint format %d)\n", DUEL_VERSION,
+               DUEL_SPEC_VERSION, NRT_FORMAT_VERSION, NEAT_CHECKPOINT_VERSION);
+        return duel_mpi_finish(duel_stdout_status("--version", 0));
     }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         duel_usage(argc < 2 ? stderr : stdout);
