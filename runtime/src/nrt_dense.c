@@ -125,11 +125,12 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
 #define NRT_DENSE_FEW 4
 
 /* The rows' new activations into next[]: a[] holds the step's activations
- * padded with zeros to whole blocks (the padding columns' weights are 0
- * too); the matrix has whole groups of eight rows, those past d->rows all
- * zero. The stores write whole groups (of four or eight): the values past
- * the last row land in the buffer's padding, beyond the last node, whose
- * columns have no weight in any row. */
+ * padded to whole blocks (zeros at first, then whatever the group stores
+ * below left there: the padding columns' weights are 0 in every row, so
+ * their values never count); the matrix has whole groups of eight rows,
+ * those past d->rows all zero. The stores write whole groups (of four or
+ * eight): the values past the last row land in that padding, beyond the
+ * last node. */
 NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const nrt_dense *d, const nrt_q15 *a,
                                                                           nrt_q15 *next, uint32_t blocks)
 {
