@@ -89,7 +89,7 @@ static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double mi
     p.n_inputs = ACT_INPUTS;
     p.n_outputs = ACT_OUTPUTS;
     err = act_genome(&g, n_hidden, n_conns, rng);
-    neat_phenotype_init(&ph);
+    neat_phenotype_init(&ph, NULL);
     if (!err)
         err = neat_phenotype_load(&ph, &g, &p);
     if (err) {
@@ -180,7 +180,7 @@ int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps)
         if (!err)
             err = act_genome(&g, 20, 200, &rng);
     }
-    neat_phenotype_init(&ph);
+    neat_phenotype_init(&ph, NULL);
     if (!err)
         err = neat_phenotype_load(&ph, &g, &p);
     if (err) {

@@ -37,7 +37,7 @@ static int db_pair_make(db_pair *p, uint32_t n_hidden, uint32_t n_conns, neat_rn
     prm.n_outputs = DUEL_N_OUTPUTS;
     for (s = 0; s < 2 && !err; s++) {
         neat_genome g;
-        neat_phenotype_init(&p->ph[s]);
+        neat_phenotype_init(&p->ph[s], NULL);
         err = db_genome(&g, n_hidden, n_conns, rng);
         if (!err)
             err = neat_phenotype_load(&p->ph[s], &g, &prm);

@@ -161,7 +161,7 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
     uint8_t *skip = (uint8_t *)malloc(cfg->neat.pop_size);
 
     res->solved = 0;
-    neat_phenotype_init(&ph);
+    neat_phenotype_init(&ph, NULL);
     err = skip == NULL ? NEAT_E_NOMEM : neat_pop_create(&pop, &cfg->neat, NULL, seed, NULL);
     for (gen = 0; !err && gen < cfg->max_generations; gen++) {
         double best_f = -1.0;

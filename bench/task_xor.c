@@ -37,7 +37,7 @@ int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res)
     int err;
 
     res->solved = 0;
-    neat_phenotype_init(&ph);
+    neat_phenotype_init(&ph, NULL);
     err = neat_pop_create(&pop, &cfg->neat, NULL, seed, NULL);
     for (gen = 0; !err && gen < cfg->max_generations; gen++) {
         n = neat_pop_size(pop);

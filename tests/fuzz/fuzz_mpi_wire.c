@@ -40,7 +40,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             /* what a rank does next: every network of every game loaded (the runtime checks the blob) */
             neat_phenotype ph;
             uint32_t i;
-            neat_phenotype_init(&ph);
+            neat_phenotype_init(&ph, NULL);
             assert(h.count > 0 && h.count <= len);
             for (i = 0; i < h.count; i++) {
                 const duel_net *a = &s.nets[m[i].a], *b = &s.nets[m[i].b];

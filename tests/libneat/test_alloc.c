@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include "neat.h"
+#include "neat_phenotype.h"
 
 /* ---- a counting allocator ----
  * Every block carries its size in a 16-byte header, so the old_size the
@@ -246,6 +247,43 @@ static void test_epoch_retry_after_nomem(void **state)
     assert_true(retried_ok > 0);
 }
 
+/* The phenotype's buffers come from the same hook: balanced, old sizes
+ * right, and a refusal of either buffer is NEAT_E_NOMEM, never a crash. */
+static void test_phenotype_through_hook(void **state)
+{
+    neat_params p = alloc_params();
+    neat_genome g;
+    size_t n;
+    (void)state;
+    memset(&g, 0, sizeof g);
+    assert_int_equal(neat_genome_minimal(&g, p.n_inputs, p.n_outputs, NULL), NEAT_OK);
+    for (n = 0; n <= 3; n++) {
+        counter c;
+        neat_alloc a;
+        neat_phenotype ph;
+        nrt_q15 in[3] = {NRT_ONE, 0, 0}, out[1];
+        int err;
+        counter_init(&c, n, 0);
+        a.fn = counting_alloc;
+        a.ud = &c;
+        neat_phenotype_init(&ph, &a);
+        err = neat_phenotype_load(&ph, &g, &p);
+        if (n == 1 || n == 2) {
+            assert_int_equal(err, NEAT_E_NOMEM);
+        } else {
+            assert_int_equal(err, NEAT_OK);
+            assert_true(nrt_settle(&ph.net, in, out, 10) >= 0);
+            /* loading again reuses the buffers */
+            assert_int_equal(neat_phenotype_load(&ph, &g, &p), NEAT_OK);
+            assert_int_equal(c.calls, 2);
+        }
+        neat_phenotype_free(&ph);
+        assert_int_equal(c.live, 0);
+        assert_int_equal(c.bad_size, 0);
+    }
+    neat_genome_free(&g, NULL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -254,6 +292,7 @@ int main(void)
         cmocka_unit_test(test_every_allocation_refused_once),
         cmocka_unit_test(test_every_allocation_from_n_refused),
         cmocka_unit_test(test_epoch_retry_after_nomem),
+        cmocka_unit_test(test_phenotype_through_hook),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -139,7 +139,7 @@ static int duel_write_blob(const char *path, const neat_genome *g, const neat_pa
 {
     neat_phenotype ph;
     int err, r;
-    neat_phenotype_init(&ph);
+    neat_phenotype_init(&ph, NULL);
     err = neat_phenotype_load(&ph, g, p);
     if (err) {
         fprintf(stderr, "duel_evolve: %s: cannot encode: %s\n", path, duel_game_error(err));

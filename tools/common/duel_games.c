@@ -121,7 +121,7 @@ static void *duel_worker(void *arg)
     uint64_t steps = 0;
     int k;
     for (k = 0; k < 2; k++) {
-        neat_phenotype_init(&seat[k].ph);
+        neat_phenotype_init(&seat[k].ph, NULL);
         seat[k].key = NULL;
     }
     for (;;) {

@@ -14,8 +14,8 @@ int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_
     char path[4200], err[4400], name[2][64];
     int side, e, rc = 0;
 
-    neat_phenotype_init(&ph[0]);
-    neat_phenotype_init(&ph[1]);
+    neat_phenotype_init(&ph[0], NULL);
+    neat_phenotype_init(&ph[1], NULL);
     snprintf(name[0], sizeof name[0], "champions/gen-%05u.blob", (unsigned)generation);
     snprintf(name[1], sizeof name[1], "gen-%05u best of %c", (unsigned)generation, champion_pop ? 'A' : 'B');
     e = neat_phenotype_load(&ph[0], champion, p);

@@ -1,20 +1,23 @@
 /* neat_phenotype.c - genome -> blob -> runtime: what evolution evaluates is exactly what would be flashed. */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
+#include "neat_internal.h"
 #include "neat_phenotype.h"
 
-void neat_phenotype_init(neat_phenotype *ph)
+void neat_phenotype_init(neat_phenotype *ph, const neat_alloc *a)
 {
     memset(ph, 0, sizeof *ph);
+    if (a != NULL)
+        ph->alloc = *a;
 }
 
 void neat_phenotype_free(neat_phenotype *ph)
 {
-    free(ph->blob);
-    free(ph->mem);
-    neat_phenotype_init(ph);
+    neat_alloc a = ph->alloc;
+    neat_mem_free(&a, ph->blob, ph->blob_cap);
+    neat_mem_free(&a, ph->mem, ph->mem_cap);
+    neat_phenotype_init(ph, &a);
 }
 
 /* ph->blob holds ph->blob_len bytes: the network it describes, loaded. */
@@ -25,7 +28,7 @@ static int neat_phenotype_load_own(neat_phenotype *ph)
     if (err)
         return err - 100;
     if (mem_need > ph->mem_cap) {
-        void *nm = realloc(ph->mem, mem_need);
+        void *nm = neat_mem_realloc(&ph->alloc, ph->mem, ph->mem_cap, mem_need);
         if (nm == NULL)
             return NEAT_E_NOMEM;
         ph->mem = nm;
@@ -38,7 +41,7 @@ static int neat_phenotype_load_own(neat_phenotype *ph)
 static int neat_phenotype_reserve(neat_phenotype *ph, size_t need)
 {
     if (need > ph->blob_cap) {
-        uint8_t *nb = (uint8_t *)realloc(ph->blob, need);
+        uint8_t *nb = (uint8_t *)neat_mem_realloc(&ph->alloc, ph->blob, ph->blob_cap, need);
         if (nb == NULL)
             return NEAT_E_NOMEM;
         ph->blob = nb;
