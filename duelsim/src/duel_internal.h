@@ -158,6 +158,14 @@ static inline int duel_food_near(const nrt_q15 in[DUEL_N_INPUTS])
     return in[1] >= 32113 || in[2] >= 32113 || in[3] >= 32113 || in[4] >= 32113 || in[5] >= 32113;
 }
 
+/* A function kept out of its caller: its locals then take no room in the
+ * caller's frame (duel_play's traced step, which the firmware never runs). */
+#if defined(__GNUC__) || defined(__clang__)
+#define DUEL_NOINLINE __attribute__((noinline))
+#else
+#define DUEL_NOINLINE
+#endif
+
 /* ---- the AVX2 sensing (duel_sense_avx2.c) ---- */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__) && !defined(DUEL_NO_AVX2)
 #define DUEL_HAVE_AVX2 1

@@ -25,15 +25,35 @@ static int duel_controller_ok(const duel_controller *c)
     return c->builtin >= 0 && c->builtin < DUEL_N_BUILTINS;
 }
 
+/* One step of a traced game: the callback gets the state before the move
+ * and plain copies of the inputs and outputs (a network's are still in its
+ * activation buffers). Apart from duel_play, so that the untraced games,
+ * and the firmware, do not carry the copies on their stack (and kept out
+ * of line for that: inlined, its locals would join duel_play's frame). */
+DUEL_NOINLINE static void duel_traced_step(duel_world *w, nrt_q15 *const in[2], const nrt_q15 *const out[2], int food_near,
+                             duel_trace_fn trace, void *ud)
+{
+    duel_world before = *w;
+    nrt_q15 in_copy[2][DUEL_N_INPUTS], out_copy[2][DUEL_N_OUTPUTS];
+    duel_event ev;
+    int side;
+    for (side = 0; side < 2; side++) {
+        memcpy(in_copy[side], in[side], sizeof in_copy[side]);
+        memcpy(out_copy[side], out[side], sizeof out_copy[side]);
+    }
+    duel_world_step_food(w, out[DUEL_WEST], out[DUEL_EAST], &ev, food_near);
+    trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in_copy, (const nrt_q15(*)[DUEL_N_OUTPUTS])out_copy, &ev);
+}
+
 int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
               void *ud)
 {
-    duel_world w, before;
+    duel_world w;
     nrt_q15 in_buf[2][DUEL_N_INPUTS], out_buf[2][DUEL_N_OUTPUTS], *in[2];
     const nrt_q15 *out[2];
-    duel_event ev;
-    duel_lanes lanes;
+    int food_near;
 #if DUEL_HAVE_AVX2
+    duel_lanes lanes;
     nrt_dense *dense[2] = {NULL, NULL};
     nrt_dense dense_of[2];
 #endif
@@ -49,13 +69,13 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     err = duel_world_init(&w, food_config);
     if (err)
         return err;
-    lanes.mask = ~0u;
     if (west->net != NULL)
         nrt_reset(west->net);
     if (east->net != NULL)
         nrt_reset(east->net);
 #if DUEL_HAVE_AVX2
     /* the same steps, faster for small networks (tests/duelsim/test_golden.c) */
+    lanes.mask = ~0u;
     if (duel_simd_active()) {
         if (west->net != NULL && nrt_dense_make(&dense_of[DUEL_WEST], west->net) == NRT_OK)
             dense[DUEL_WEST] = &dense_of[DUEL_WEST];
@@ -73,14 +93,9 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
             in[side] = dense[side] != NULL ? nrt_dense_inputs(dense[side])
                                            : (c->net != NULL ? nrt_inputs(c->net) : in_buf[side]);
         }
-#else
-        in[DUEL_WEST] = west->net != NULL ? nrt_inputs(west->net) : in_buf[DUEL_WEST];
-        in[DUEL_EAST] = east->net != NULL ? nrt_inputs(east->net) : in_buf[DUEL_EAST];
-#endif
         if (duel_sense_both(&w, &lanes, in[DUEL_WEST], in[DUEL_EAST]) != 0)
             for (side = 0; side < 2; side++)
                 duel_sense(&w, side, in[side]);
-#if DUEL_HAVE_AVX2
         for (side = 0; side < 2; side++)
             if (dense[side] != NULL) {
                 nrt_dense_step(dense[side]);
@@ -89,25 +104,18 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
                 out[side] = duel_act(side == DUEL_WEST ? west : east, in[side], out_buf[side]);
             }
 #else
+        in[DUEL_WEST] = west->net != NULL ? nrt_inputs(west->net) : in_buf[DUEL_WEST];
+        in[DUEL_EAST] = east->net != NULL ? nrt_inputs(east->net) : in_buf[DUEL_EAST];
+        duel_sense(&w, DUEL_WEST, in[DUEL_WEST]);
+        duel_sense(&w, DUEL_EAST, in[DUEL_EAST]);
         out[DUEL_WEST] = duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
         out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
 #endif
+        food_near = duel_food_near(in[DUEL_WEST]) || duel_food_near(in[DUEL_EAST]);
         if (trace != NULL)
-            before = w;
-        duel_world_step_food(&w, out[DUEL_WEST], out[DUEL_EAST], &ev,
-                             duel_food_near(in[DUEL_WEST]) || duel_food_near(in[DUEL_EAST]));
-        if (trace != NULL) {
-            /* the callback gets plain arrays: a network's inputs and outputs
-             * are still in its activation buffers, copy them out */
-            for (side = 0; side < 2; side++) {
-                if (in[side] != in_buf[side])
-                    memcpy(in_buf[side], in[side], sizeof in_buf[side]);
-                if (out[side] != out_buf[side])
-                    memcpy(out_buf[side], out[side], sizeof out_buf[side]);
-            }
-            trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in_buf, (const nrt_q15(*)[DUEL_N_OUTPUTS])out_buf,
-                  &ev);
-        }
+            duel_traced_step(&w, in, out, food_near, trace, ud);
+        else
+            duel_world_step_food(&w, out[DUEL_WEST], out[DUEL_EAST], NULL, food_near);
     }
 #if DUEL_HAVE_AVX2
     /* the networks end as nrt_step would have left them */

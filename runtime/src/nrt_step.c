@@ -67,14 +67,15 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
             /* fall through */
         case 1:
             sum += (int32_t)w[k] * prev[src[k]];
+            k += 1u;
             break;
         case 2:
             sum += NRT_PAIR(w, src, prev, k);
+            k += 2u;
             break;
         default:
             break;
         }
-        k = e;
         next[j] = nrt_sig_eval(sum);
     }
     net->cur ^= 1u;
