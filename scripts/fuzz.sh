@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fuzz.sh SECONDS [FUZZ_BUILD_DIR [HARNESS...]] - every libFuzzer harness (or those named: blob pop coev ini lcm_log
+# fuzz.sh SECONDS [FUZZ_BUILD_DIR [HARNESS...]] - every libFuzzer harness (or those named: blob pop genome coev ini lcm_log
 # lcm_msg rundir mpi_wire) for SECONDS each on a copy of its seed corpus; prints each one's executions, coverage and crashes,
 # and exits 1 if any crashed, hung or leaked (the input is kept in FUZZ_BUILD_DIR/crashes/).
 set -euo pipefail
@@ -7,7 +7,7 @@ secs=${1:?usage: scripts/fuzz.sh SECONDS [FUZZ_BUILD_DIR [HARNESS...]]}
 root=$(cd "$(dirname "$0")/.." && pwd)
 fuzz=$(realpath "${2:-$root/build-fuzz}")
 shift $(( $# < 2 ? $# : 2 ))
-harnesses=${*:-blob pop coev ini lcm_log lcm_msg rundir mpi_wire}
+harnesses=${*:-blob pop genome coev ini lcm_log lcm_msg rundir mpi_wire}
 crashes=$fuzz/crashes
 mkdir -p "$crashes"
 status=0

@@ -11,7 +11,7 @@ duel=$build/bin/duel_evolve
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # inputs that once crashed a harness (regress-*) are kept
-for d in blob pop coev ini lcm_log lcm_msg rundir; do
+for d in blob pop genome coev ini lcm_log lcm_msg rundir; do
   mkdir -p "$c/$d"
   find "$c/$d" -type f ! -name 'regress-*' -delete
 done
@@ -24,6 +24,7 @@ printf '[run]\ngenerations = 3\nseed = 3\n[coevolution]\nspecies_opponents = 1\n
 "$duel" run --config "$work/tiny.ini" --out "$work/r3" --quiet
 cp "$work/r1/checkpoint.bin" "$c/coev/gen1.bin"
 cp "$work/r3/checkpoint.bin" "$c/coev/gen3.bin"
+cp "$work/r3/champions/"*.genome "$c/genome/"
 
 cp "$root/configs/"*.ini "$root/bench/"*.ini "$root/tests/tools/coev-small.ini" "$c/ini/"
 for p in "$root/configs/plans/"*.ini "$root/tests/tools/tiny-plan.ini"; do cp "$p" "$c/ini/plan-$(basename "$p")"; done

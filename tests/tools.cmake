@@ -14,6 +14,8 @@ if(NEAT_FUZZ)
   target_link_libraries(fuzz_blob PRIVATE neat nrt)
   neat_add_fuzz(fuzz_pop)
   target_link_libraries(fuzz_pop PRIVATE neat)
+  neat_add_fuzz(fuzz_genome)
+  target_link_libraries(fuzz_genome PRIVATE neat nrt)
   neat_add_fuzz(fuzz_coev)
   target_link_libraries(fuzz_coev PRIVATE neat)
   neat_add_fuzz(fuzz_ini ${PROJECT_SOURCE_DIR}/tools/common/duel_config.c ${PROJECT_SOURCE_DIR}/bench/bench_config.c
@@ -31,7 +33,7 @@ if(NEAT_FUZZ)
   target_include_directories(fuzz_mpi_wire PRIVATE ${PROJECT_SOURCE_DIR}/tools/mpi)
   target_link_libraries(fuzz_mpi_wire PRIVATE neattools nrt)
 
-  add_custom_target(fuzzers DEPENDS fuzz_blob fuzz_pop fuzz_coev fuzz_ini fuzz_lcm_log fuzz_lcm_msg fuzz_rundir
+  add_custom_target(fuzzers DEPENDS fuzz_blob fuzz_pop fuzz_genome fuzz_coev fuzz_ini fuzz_lcm_log fuzz_lcm_msg fuzz_rundir
                   fuzz_mpi_wire)
 
   add_executable(make_corpus fuzz/make_corpus.c)
@@ -83,7 +85,7 @@ add_test(NAME tools/golden_quick
                  ${CMAKE_CURRENT_SOURCE_DIR}/tools/fixtures/golden-quick/sha256)
 
 # the baselines of configs/ (start topologies, fixed and simplifying runs, random fitness) through the command line
-foreach(check config fixed simplify best random)
+foreach(check config fixed simplify best genome random)
   add_test(NAME tools/presets_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/presets.sh $<TARGET_FILE:duel_evolve> ${PROJECT_SOURCE_DIR}/configs
                    ${check})

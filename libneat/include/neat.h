@@ -31,6 +31,7 @@ extern "C" {
 #define NEAT_VERSION_MAJOR 0
 #define NEAT_VERSION_MINOR 1
 #define NEAT_CHECKPOINT_VERSION 2 /* checkpoint format, apart from the code */
+#define NEAT_GENOME_FILE_VERSION 1 /* genome file format (neat_genome_save) */
 
 /* ---- errors ------------------------------------------------------------- */
 enum neat_error {
@@ -40,9 +41,9 @@ enum neat_error {
     NEAT_E_PARAM = -3,     /* a parameter out of its documented range */
     NEAT_E_FITNESS = -4,   /* a fitness negative, NaN or infinite, or missing: see neat_pop_error_index */
     NEAT_E_TOOBIG = -5,    /* a network too large for the blob format */
-    NEAT_E_FORMAT = -6,    /* checkpoint bytes: bad magic, version, size or value */
-    NEAT_E_CRC = -7,       /* checkpoint checksum mismatch */
-    NEAT_E_TRUNCATED = -8, /* checkpoint shorter than it says */
+    NEAT_E_FORMAT = -6,    /* checkpoint or genome file bytes: bad magic, version, size or value */
+    NEAT_E_CRC = -7,       /* checkpoint or genome file checksum mismatch */
+    NEAT_E_TRUNCATED = -8, /* checkpoint or genome file shorter than it says */
     NEAT_E_STATE = -9      /* call out of order (e.g. fitness after epoch) */
 };
 
@@ -198,6 +199,25 @@ size_t neat_blob_size(const neat_genome *g);
  * than 256 nodes or 65535 enabled connections; NEAT_E_ARG if cap is short. */
 int neat_blob_write(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t *buf, size_t cap,
                     size_t *len);
+
+/* ---- genome file: one genome with all its genes (docs/formats.md) -------
+ * Unlike a blob, it keeps what evolution needs: node ids, innovation
+ * numbers, disabled genes and the exact double weights, so a champion can
+ * seed a new run (neat_start) or be analysed. Versioned and checksummed. */
+/* Writes g, a genome for n_inputs inputs and n_outputs outputs (without the
+ * bias), into a new buffer *buf of *len bytes from allocator a (NULL: libc;
+ * free it with the same allocator and *len). NEAT_E_ARG if g lacks the bias,
+ * an input or an output of that shape. */
+int neat_genome_save(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t **buf, size_t *len,
+                     const neat_alloc *a);
+/* Reads a genome file into g (initialised here; free it with
+ * neat_genome_free) and its shape into *n_inputs, *n_outputs (either may be
+ * NULL). Checks magic, version and CRC before anything else, then rebuilds
+ * the genome through the genome API. NEAT_E_FORMAT, NEAT_E_CRC or
+ * NEAT_E_TRUNCATED with *err_offset (if not NULL) the byte offset of the
+ * problem; g is then empty. */
+int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, const uint8_t *buf, size_t len,
+                     const neat_alloc *a, size_t *err_offset);
 
 /* ---- population ---------------------------------------------------------- */
 typedef struct neat_pop neat_pop;

@@ -145,9 +145,9 @@ const char *neat_strerror(int err)
     case NEAT_E_PARAM: return "parameter out of range";
     case NEAT_E_FITNESS: return "fitness missing, negative, NaN or infinite";
     case NEAT_E_TOOBIG: return "network too large for the blob format";
-    case NEAT_E_FORMAT: return "malformed checkpoint";
-    case NEAT_E_CRC: return "checkpoint checksum mismatch";
-    case NEAT_E_TRUNCATED: return "checkpoint truncated";
+    case NEAT_E_FORMAT: return "malformed file (magic, version, size or value)";
+    case NEAT_E_CRC: return "checksum mismatch";
+    case NEAT_E_TRUNCATED: return "truncated";
     case NEAT_E_STATE: return "call out of order";
     default: return "unknown error";
     }

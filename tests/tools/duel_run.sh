@@ -66,7 +66,7 @@ overrides)
   grep -q "^add_node_prob = 0.05" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
   grep -q "^hof_opponents = 6" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
   grep -q "^generations = 5" "$tmp/o/config.ini" || { echo "generations not stored"; exit 1; }
-  [ "$(ls "$tmp/o/champions" | wc -l)" -eq 5 ] || { echo "not extended to 5 generations"; exit 1; }
+  [ "$(ls "$tmp/o/champions/"*.blob | wc -l)" -eq 5 ] || { echo "not extended to 5 generations"; exit 1; }
   expect_bad "pop_size cannot change" resume "$tmp/o" --set pop_size=40
   expect_bad "seed cannot change" resume "$tmp/o" --set seed=9
   expect_bad "unknown key 'add_nod_prob' (did you mean 'add_node_prob'?)" resume "$tmp/o" --set add_nod_prob=1

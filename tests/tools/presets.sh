@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# presets.sh - the baselines of configs/ through the command line: generation 0's sizes, fixed and simplifying runs never adding structure, the best-topology start from a blob, random fitness.
+# presets.sh - the baselines of configs/ through the command line: generation 0's sizes, fixed and simplifying runs never adding structure, the best-topology start from a blob or a genome file, random fitness.
 set -euo pipefail
 duel=$1
 configs=$2
@@ -101,6 +101,60 @@ best)
     --set start=blob:"$tmp/bad.blob" --out "$tmp/b4"
   [ ! -e "$tmp/b4" ] || fail "a refused run made its directory"
   ;;
+genome)
+  # a champion's genome file: every generation's champion is saved with its genes; inspect shows them and the
+  # same network as the blob; play takes it; it seeds a run (its topology, innovations and disabled genes kept,
+  # weights drawn afresh) that resumes without it; bad files are one line naming the file and the byte
+  "$duel" run --config "$configs/paper.ini" "${small[@]}" --set add_node_prob=0.3 --set add_conn_prob=0.5 \
+    --generations 8 --out "$tmp/c"
+  [ "$(ls "$tmp/c/champions/"*.genome | wc -l)" -eq 8 ] || fail "not one genome file per generation"
+  g=$tmp/c/champions/gen-00007.genome blob=$tmp/c/champions/gen-00007.blob
+  "$duel" inspect "$g" > "$tmp/g.txt"
+  genes=$(sed -n 's/^connection genes: \([0-9]*\) .*/\1/p' "$tmp/g.txt")
+  [ "$(grep -c '^gene conn ' "$tmp/g.txt")" -eq "$genes" ] || fail "connection gene lines != $genes"
+  [ "$(grep -c '^gene node ' "$tmp/g.txt")" -eq "$(sed -n 's/^node genes: \([0-9]*\) .*/\1/p' "$tmp/g.txt")" ] ||
+    fail "node gene lines"
+  grep -q '^genome inputs: 12 ' "$tmp/g.txt" && grep -q '^genome outputs: 3$' "$tmp/g.txt" || fail "genome shape"
+  # after its genes, the network: exactly what inspect says of the blob (but the file name)
+  diff <(sed -n '/^its network/,$p' "$tmp/g.txt" | tail -n +3) <("$duel" inspect "$blob" | tail -n +2) ||
+    fail "the genome's network is not the blob's"
+  # (the first line names the files)
+  [ "$("$duel" play "$g" builtin:forager | tail -n +2)" = "$("$duel" play "$blob" builtin:forager | tail -n +2)" ] ||
+    fail "play: the genome plays otherwise than its blob"
+  h=$(sed -n 's/^hidden: //p' "$tmp/g.txt")
+  n=$(sed -n 's/^connections: //p' "$tmp/g.txt")
+  [ "$h" -gt 0 ] || fail "the champion has no hidden node to keep"
+  cp "$g" "$tmp/seed.genome"
+  "$duel" run --config "$configs/best-topology.ini" --set "start=genome:$tmp/seed.genome" "${small[@]}" \
+    --generations 3 --out "$tmp/s"
+  # generation 0 is the genome's network; its disabled genes may be enabled again by crossover later, but no
+  # gene is added (mode = fixed)
+  gen0 "$tmp/s" "$h" "$n"
+  [ "$(col "$tmp/s/generations.csv" max_connections | sort -n | tail -1)" -le "$genes" ] || fail "a gene was added"
+  [ "$(col "$tmp/s/generations.csv" max_hidden | sort -u)" = "$h" ] || fail "a node was added"
+  # the genome's own innovation numbers, not 0, 1, ... as from a blob
+  top=$(awk '/^gene conn / {print $3}' "$tmp/g.txt" | sort -n | tail -1)
+  "$duel" inspect "$tmp/s" | grep -q "^start: .*, $n connections, innovations 0\.\.$top$" ||
+    fail "the start's innovations: $("$duel" inspect "$tmp/s" | grep '^start:'), expected 0..$top"
+  grep -q "^start = genome:$tmp/seed.genome$" "$tmp/s/config.ini" || fail "config.ini does not record the genome"
+  ! cmp -s "$blob" "$tmp/s/champions/gen-00000.blob" || fail "generation 0 kept the genome's weights"
+  rm "$tmp/seed.genome"
+  "$duel" resume "$tmp/s" --generations 4 --quiet
+  [ "$(tail -n +2 "$tmp/s/generations.csv" | wc -l)" -eq 8 ] || fail "resumed without the genome: not 4 generations"
+  expect_bad "start topology cannot change" resume "$tmp/s" --set start=minimal
+  # bad files: cut short, a flipped byte, a blob where a genome is named
+  head -c 60 "$g" > "$tmp/cut.genome"
+  expect_bad "cut.genome: not a valid genome file: .* at byte [0-9]*" inspect "$tmp/cut.genome"
+  expect_bad "cut.genome: not a valid genome file: .* at byte [0-9]*" play "$tmp/cut.genome" builtin:idle
+  expect_bad "cut.genome: not a valid genome file: .* at byte [0-9]*" run --config "$configs/best-topology.ini" \
+    --set start=genome:"$tmp/cut.genome" --out "$tmp/s2"
+  cp "$g" "$tmp/flip.genome"
+  printf '\377' | dd of="$tmp/flip.genome" bs=1 seek=30 conv=notrunc status=none
+  expect_bad "flip.genome: not a valid genome file: checksum mismatch at byte" inspect "$tmp/flip.genome"
+  expect_bad "blob.genome: not a valid genome file: malformed file" run --config "$configs/best-topology.ini" \
+    --set start=genome:"$(cp "$blob" "$tmp/blob.genome"; echo "$tmp/blob.genome")" --out "$tmp/s3"
+  [ ! -e "$tmp/s2" ] && [ ! -e "$tmp/s3" ] || fail "a refused run made its directory"
+  ;;
 random)
   # every game a coin: no game is played, so thousands of games take no time; sizes drift both ways
   "$duel" run --config "$configs/random-fitness.ini" --set pop_size=32 --quiet --generations 30 --out "$tmp/r1"
@@ -117,7 +171,7 @@ config)
   # the rule coevolution cannot use, and the start's syntax
   expect_bad "pop_stagnation must be 0 in coevolution" config --dump --set pop_stagnation=35
   expect_bad "hidden:H:inputs or hidden:H:bias with H in 1..240" config --dump --set start=hidden:0:bias
-  expect_bad "expected minimal, hidden:H:inputs, hidden:H:bias or blob:PATH" config --dump --set start=huge
+  expect_bad "expected minimal, hidden:H:inputs, hidden:H:bias, blob:PATH or genome:PATH" config --dump --set start=huge
   expect_bad "start = hidden:240: 256 nodes, more than max_nodes = 200" config --dump --set start=hidden:240:bias \
     --set max_nodes=200
   printf '[neat]\npop_stagnation = 35\n' > "$tmp/ps.ini"

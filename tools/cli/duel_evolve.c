@@ -29,13 +29,14 @@ static void duel_usage(FILE *f)
                "[--period-ms N] [--lcm-log FILE.lcm]\n"
                "       duel_evolve log info FILE.lcm\n"
                "       duel_evolve log dump FILE.lcm [--channel C]\n"
-               "       duel_evolve inspect BLOB | RUN_DIR | CHECKPOINT\n"
-               "       duel_evolve dot BLOB [-o FILE.dot]\n"
+               "       duel_evolve inspect BLOB | GENOME | RUN_DIR | CHECKPOINT\n"
+               "       duel_evolve dot BLOB|GENOME [-o FILE.dot]\n"
                "       duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [--size 600] "
                "[--every N] [--sensors] [--video FILE.mp4] [--fps 30]\n"
                "       duel_evolve render-net BLOB --out FILE.png\n"
                "       duel_evolve export BLOB --c-array NAME [-o FILE.c]\n"
-               "Robot duels of spec v%d (docs/duelsim.md). Under mpirun, run, resume and experiment use every rank "
+               "A and B: champion blobs or genome files (champions/gen-N.blob, .genome) or builtin:NAME; wherever a BLOB "
+               "is named, a genome file may be. Robot duels of spec v%d (docs/duelsim.md). Under mpirun, run, resume and experiment use every rank "
                "(docs/cluster.md)%s.\n", DUEL_SPEC_VERSION, duel_mpi_built() ? "" : "; this build has no MPI");
 }
 

@@ -1,4 +1,4 @@
-/* duel_inspect.c - `duel_evolve inspect BLOB` and `duel_evolve dot BLOB`: a champion blob's nodes and connections as text or Graphviz (a run directory or checkpoint goes to duel_inspect_run.c). */
+/* duel_inspect.c - `duel_evolve inspect BLOB|GENOME` and `duel_evolve dot BLOB|GENOME`: a champion's genes and network as text or Graphviz (a run directory or checkpoint goes to duel_inspect_run.c). */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdlib.h>
@@ -256,6 +256,56 @@ static int duel_is_checkpoint(const char *path)
     return yes;
 }
 
+/* A genome file's own content, before its network's: the shape, every
+ * node gene and every connection gene (innovation, enabled, the exact
+ * double weight), and the fitness it was saved with. */
+static int duel_inspect_genome(const char *path)
+{
+    neat_genome g;
+    uint32_t ni, no, i, disabled = 0;
+    if (duel_genome_read(path, &g, &ni, &no) != 0)
+        return -1;
+    for (i = 0; i < g.n_conns; i++)
+        disabled += !g.conns[i].enabled;
+    printf("genome file: %s\n", path);
+    printf("genome format version: %u\n", (unsigned)NEAT_GENOME_FILE_VERSION);
+    printf("genome inputs: %u (bias not included)\n", (unsigned)ni);
+    printf("genome outputs: %u\n", (unsigned)no);
+    printf("node genes: %u (%u hidden)\n", (unsigned)g.n_nodes, (unsigned)neat_genome_hidden_count(&g));
+    printf("connection genes: %u (%u disabled)\n", (unsigned)g.n_conns, (unsigned)disabled);
+    if (g.has_fitness)
+        printf("fitness: %.17g\n", g.fitness);
+    else
+        printf("fitness: none\n");
+    printf("node genes (id, type):\n");
+    for (i = 0; i < g.n_nodes; i++) {
+        static const char *const kind[] = {"bias", "input", "output", "hidden"};
+        printf("gene node %5lu  %s\n", (unsigned long)g.nodes[i].id,
+               g.nodes[i].type <= 3 ? kind[g.nodes[i].type] : "?");
+    }
+    printf("connection genes (innovation, in -> out, weight, enabled):\n");
+    for (i = 0; i < g.n_conns; i++)
+        printf("gene conn %6lu  %5lu -> %5lu  weight %.17g%s\n", (unsigned long)g.conns[i].innov,
+               (unsigned long)g.conns[i].in, (unsigned long)g.conns[i].out, g.conns[i].weight,
+               g.conns[i].enabled ? "" : "  disabled");
+    printf("its network, as the runtime runs it (the blob it encodes to):\n");
+    neat_genome_free(&g, NULL);
+    return 0;
+}
+
+/* whether the file at path starts as a genome file does */
+static int duel_is_genome_path(const char *path)
+{
+    uint8_t magic[8];
+    FILE *f = fopen(path, "rb");
+    int yes;
+    if (f == NULL)
+        return 0;
+    yes = fread(magic, 1, 8, f) == 8 && duel_is_genome_file(magic, 8);
+    fclose(f);
+    return yes;
+}
+
 int duel_cmd_inspect(int argc, char **argv)
 {
     duel_insp x;
@@ -265,11 +315,13 @@ int duel_cmd_inspect(int argc, char **argv)
     int rc = 0;
 
     if (argc != 1 || argv[0][0] == '-') {
-        fprintf(stderr, "usage: duel_evolve inspect BLOB | RUN_DIR | CHECKPOINT\n");
+        fprintf(stderr, "usage: duel_evolve inspect BLOB | GENOME | RUN_DIR | CHECKPOINT\n");
         return 2;
     }
     if (duel_is_checkpoint(argv[0]))
         return duel_inspect_run(argv[0]);
+    if (duel_is_genome_path(argv[0]) && duel_inspect_genome(argv[0]) != 0)
+        return 2;
     if (duel_insp_open(&x, argv[0]) != 0)
         return 2;
     n = &x.net;

@@ -134,7 +134,7 @@ static const char *duel_game_error(int err)
 }
 
 /* The champion's blob as the runtime accepted it (the one path from genome
- * to blob, tools/neat_phenotype.c), written atomically. */
+ * to blob, neat_phenotype_load), written atomically. */
 static int duel_write_blob(const char *path, const neat_genome *g, const neat_params *p)
 {
     neat_phenotype ph;
@@ -168,6 +168,11 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
     snprintf(row, sizeof row, "champions/gen-%05u.blob", rep->generation);
     duel_path(path, sizeof path, R->dir, row);
     if (duel_write_blob(path, neat_coev_champion(R->coev), np) != 0)
+        return -1;
+    /* and its genes: a champion to seed a run with (start = genome:PATH) */
+    snprintf(row, sizeof row, "champions/gen-%05u.genome", rep->generation);
+    duel_path(path, sizeof path, R->dir, row);
+    if (duel_genome_write(path, neat_coev_champion(R->coev), np->n_inputs, np->n_outputs) != 0)
         return -1;
     if (R->record_games &&
         duel_lcm_record_champion_games(R->dir, rep->generation, rep->champion_pop, neat_coev_champion(R->coev),
@@ -669,15 +674,16 @@ static int duel_run_main(int argc, char **argv)
     return duel_go(&R);
 }
 
-/* config.ini's start topology is the one the checkpoint carries. A blob
- * that is no longer there is not needed: the checkpoint has its network. */
+/* config.ini's start topology is the one the checkpoint carries. A blob or
+ * genome file that is no longer there is not needed: the checkpoint has its network. */
 static int duel_check_start(duel_run *R, const char *ckpt)
 {
     char err[DUEL_START_MAX_PATH + 200], st[DUEL_START_MAX_PATH + 16];
     const neat_genome *have = neat_coev_start(R->coev);
     neat_genome want;
     int same;
-    if (R->cfg.start.kind == DUEL_START_BLOB && access(R->cfg.start.path, F_OK) != 0)
+    if ((R->cfg.start.kind == DUEL_START_BLOB || R->cfg.start.kind == DUEL_START_GENOME) &&
+        access(R->cfg.start.path, F_OK) != 0)
         return 0;
     if (duel_start_genome(&R->cfg, &want, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);

@@ -43,10 +43,10 @@ void duel_config_default(duel_config *cfg)
     cfg->start.kind = DUEL_START_MINIMAL;
 }
 
-/* "minimal", "hidden:H:inputs", "hidden:H:bias" or "blob:PATH". */
+/* "minimal", "hidden:H:inputs", "hidden:H:bias", "blob:PATH" or "genome:PATH". */
 static int duel_start_parse(duel_start *st, const char *v, char *err, size_t err_len)
 {
-    static const char expect[] = "expected minimal, hidden:H:inputs, hidden:H:bias or blob:PATH";
+    static const char expect[] = "expected minimal, hidden:H:inputs, hidden:H:bias, blob:PATH or genome:PATH";
     if (strcmp(v, "minimal") == 0) {
         memset(st, 0, sizeof *st);
         st->kind = DUEL_START_MINIMAL;
@@ -82,6 +82,17 @@ static int duel_start_parse(duel_start *st, const char *v, char *err, size_t err
             strcpy(st->path, v + 5);
         return 0;
     }
+    if (strncmp(v, "genome:", 7) == 0 && v[7] != '\0') {
+        if (strlen(v + 7) >= DUEL_START_MAX_PATH) {
+            snprintf(err, err_len, "start: a genome path of %zu characters (at most %d)", strlen(v + 7),
+                     DUEL_START_MAX_PATH - 1);
+            return -1;
+        }
+        memset(st, 0, sizeof *st);
+        st->kind = DUEL_START_GENOME;
+        strcpy(st->path, v + 7);
+        return 0;
+    }
     snprintf(err, err_len, "start = '%s': %s", v, expect);
     return -1;
 }
@@ -94,6 +105,8 @@ void duel_start_text(const duel_start *st, char *buf, size_t cap)
         snprintf(buf, cap, "blob:%s", st->path);
     else if (st->kind == DUEL_START_BLOB)
         snprintf(buf, cap, "blob");
+    else if (st->kind == DUEL_START_GENOME)
+        snprintf(buf, cap, "genome:%s", st->path);
     else
         snprintf(buf, cap, "minimal");
 }
@@ -109,7 +122,28 @@ int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t 
         e = neat_genome_minimal(g, p->n_inputs, p->n_outputs, NULL);
     else if (cfg->start.kind == DUEL_START_HIDDEN)
         e = neat_genome_recurrent_hidden(g, p->n_inputs, p->n_outputs, cfg->start.hidden, cfg->start.direct, NULL);
-    else {
+    else if (cfg->start.kind == DUEL_START_GENOME) {
+        uint32_t ni, no;
+        size_t off = 0;
+        if (duel_file_read(cfg->start.path, 64u << 20, &blob, &len) != 0) {
+            snprintf(err, err_len, "%s: cannot read the start genome: %s", cfg->start.path,
+                     errno == EFBIG ? "larger than 64 MB" : strerror(errno));
+            return -1;
+        }
+        e = neat_genome_load(g, &ni, &no, blob, len, NULL, &off);
+        free(blob);
+        if (e == NEAT_E_FORMAT || e == NEAT_E_CRC || e == NEAT_E_TRUNCATED) {
+            snprintf(err, err_len, "%s: not a valid genome file: %s at byte %lu", cfg->start.path, neat_strerror(e),
+                     (unsigned long)off);
+            return -1;
+        }
+        if (!e && (ni != p->n_inputs || no != p->n_outputs)) {
+            snprintf(err, err_len, "%s: a genome of %u inputs and %u outputs, not the duel's %u and %u",
+                     cfg->start.path, ni, no, p->n_inputs, p->n_outputs);
+            neat_genome_free(g, NULL);
+            return -1;
+        }
+    } else {
         /* a blob is a few KB; a much larger file is not one */
         if (duel_file_read(cfg->start.path, 1u << 20, &blob, &len) != 0) {
             snprintf(err, err_len, "%s: cannot read the start blob: %s", cfg->start.path,

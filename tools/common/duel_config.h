@@ -13,7 +13,8 @@
 enum duel_start_kind {
     DUEL_START_MINIMAL = 0, /* "minimal": bias and inputs to outputs, 39 connections */
     DUEL_START_HIDDEN = 1,  /* "hidden:H:inputs" or "hidden:H:bias": H fully recurrent hidden nodes */
-    DUEL_START_BLOB = 2     /* "blob:PATH": a champion blob's network */
+    DUEL_START_BLOB = 2,    /* "blob:PATH": a champion blob's network */
+    DUEL_START_GENOME = 3   /* "genome:PATH": a genome file's genes (champions/gen-N.genome) */
 };
 #define DUEL_START_MAX_HIDDEN 240 /* 16 + 240 nodes: the blob format's 256 */
 #define DUEL_START_MAX_PATH 4096
@@ -22,7 +23,7 @@ typedef struct duel_start {
     int kind;                 /* enum duel_start_kind */
     uint32_t hidden;          /* DUEL_START_HIDDEN: H */
     int direct;               /* DUEL_START_HIDDEN: enum neat_direct */
-    char path[DUEL_START_MAX_PATH]; /* DUEL_START_BLOB: as given */
+    char path[DUEL_START_MAX_PATH]; /* DUEL_START_BLOB, DUEL_START_GENOME: as given */
 } duel_start;
 
 typedef struct duel_config {

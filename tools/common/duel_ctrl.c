@@ -1,4 +1,4 @@
-/* duel_ctrl.c - champion blob files read whole, and a controller from the command line: a blob (validated by the runtime) or builtin:NAME. */
+/* duel_ctrl.c - champion blob and genome files read whole, and a controller from the command line: a blob or genome file (validated by the runtime) or builtin:NAME. */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,9 +9,91 @@
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
 
+/* A genome file (neat_genome_save) holds 21 bytes a connection gene: far
+ * more than a blob could, but not without bound. */
+#define DUEL_GENOME_MAX (64u << 20)
+
+int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs)
+{
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    int r = duel_file_read(path, DUEL_GENOME_MAX, &buf, &len);
+    neat_genome_init(g);
+    if (r != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", path, r == -1 ? "open" : "read",
+                errno == EFBIG ? "larger than 64 MB" : strerror(errno));
+        return -1;
+    }
+    return duel_genome_parse(path, buf, len, g, n_inputs, n_outputs, 1);
+}
+
+int duel_genome_parse(const char *path, uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
+                      uint32_t *n_outputs, int free_buf)
+{
+    size_t off = 0;
+    int err = neat_genome_load(g, n_inputs, n_outputs, buf, len, NULL, &off);
+    if (free_buf)
+        free(buf);
+    if (err) {
+        fprintf(stderr, "duel_evolve: %s: not a valid genome file: %s at byte %lu\n", path, neat_strerror(err),
+                (unsigned long)off);
+        return -1;
+    }
+    return 0;
+}
+
+int duel_is_genome_file(const uint8_t *buf, size_t len)
+{
+    return len >= 8 && memcmp(buf, "NEATGENM", 8) == 0;
+}
+
+int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs)
+{
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    int err = neat_genome_save(g, n_inputs, n_outputs, &buf, &len, NULL), r;
+    if (err) {
+        fprintf(stderr, "duel_evolve: %s: cannot encode the genome: %s\n", path, neat_strerror(err));
+        return -1;
+    }
+    r = duel_file_replace(path, buf, len);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    free(buf);
+    return r;
+}
+
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
 {
-    int r = duel_file_read(path, DUEL_BLOB_MAX, blob, len);
+    int r = duel_file_read(path, DUEL_GENOME_MAX, blob, len);
+    if (r == 0 && duel_is_genome_file(*blob, *len)) {
+        /* a genome file: its network's blob, as evolution would encode it */
+        neat_genome g;
+        uint32_t ni, no;
+        uint8_t *file = *blob;
+        *blob = NULL;
+        if (duel_genome_parse(path, file, *len, &g, &ni, &no, 1) != 0) {
+            *len = 0;
+            return -1;
+        }
+        *len = neat_blob_size(&g);
+        *blob = (uint8_t *)malloc(*len);
+        r = *blob == NULL ? NEAT_E_NOMEM : neat_blob_write(&g, ni, no, *blob, *len, len);
+        neat_genome_free(&g, NULL);
+        if (r != 0) {
+            fprintf(stderr, "duel_evolve: %s: the genome has no blob: %s\n", path, neat_strerror(r));
+            free(*blob);
+            *blob = NULL;
+            *len = 0;
+            return -1;
+        }
+        return 0;
+    }
+    if (r == 0 && *len > DUEL_BLOB_MAX) {
+        free(*blob);
+        r = -2;
+        errno = EFBIG;
+    }
     if (r == 0)
         return 0;
     *blob = NULL;

@@ -1,0 +1,63 @@
+/* neat_genome_file.c - one genome with its genes as a versioned, checksummed file: a champion to seed a run with or to analyse. */
+#include <string.h>
+
+#include "neat_io.h"
+#include "nrt.h"
+
+static const uint8_t neat_genome_magic[8] = {'N', 'E', 'A', 'T', 'G', 'E', 'N', 'M'};
+
+int neat_genome_save(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t **buf, size_t *len,
+                     const neat_alloc *a)
+{
+    neat_wbuf w;
+    if (g == NULL || buf == NULL || len == NULL || !neat_genome_io_ok(g, n_inputs, n_outputs))
+        return NEAT_E_ARG;
+    memset(&w, 0, sizeof w);
+    w.a = a;
+    neat_put(&w, neat_genome_magic, 8);
+    neat_put_u32(&w, NEAT_GENOME_FILE_VERSION);
+    neat_put_u32(&w, n_inputs);
+    neat_put_u32(&w, n_outputs);
+    neat_put_genome(&w, g);
+    return neat_put_finish(&w, buf, len);
+}
+
+int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, const uint8_t *buf, size_t len,
+                     const neat_alloc *a, size_t *err_offset)
+{
+    neat_rbuf r;
+    neat_params p;
+    if (g == NULL || buf == NULL)
+        return NEAT_E_ARG;
+    neat_genome_init(g);
+    memset(&r, 0, sizeof r);
+    r.p = buf;
+    r.n = len;
+    neat_get_frame(&r, neat_genome_magic, NEAT_GENOME_FILE_VERSION);
+    /* the shape first: neat_get_genome checks the genome against it (bias,
+     * inputs and outputs present, at most NRT_MAX_NODES nodes) */
+    p = neat_params_default();
+    p.n_inputs = neat_get_u32(&r);
+    p.n_outputs = neat_get_u32(&r);
+    p.max_nodes = NRT_MAX_NODES;
+    if (!r.err && (p.n_inputs < 1 || p.n_outputs < 1 || p.n_inputs >= NRT_MAX_NODES || p.n_outputs >= NRT_MAX_NODES ||
+                   p.n_inputs + p.n_outputs + 1 > NRT_MAX_NODES)) {
+        r.off = 12;
+        neat_fail(&r, NEAT_E_FORMAT);
+    }
+    if (!r.err)
+        neat_get_genome(&r, g, &p, a);
+    if (!r.err && r.off != r.n)
+        neat_fail(&r, NEAT_E_FORMAT); /* bytes left over */
+    if (r.err) {
+        if (err_offset != NULL)
+            *err_offset = r.err_off;
+        neat_genome_free(g, a);
+        return r.err;
+    }
+    if (n_inputs != NULL)
+        *n_inputs = p.n_inputs;
+    if (n_outputs != NULL)
+        *n_outputs = p.n_outputs;
+    return NEAT_OK;
+}
