@@ -76,7 +76,19 @@ uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys);
 
 /* ---- parameters ---------------------------------------------------------
  * neat_params_default() gives the paper's Appendix A values; every other
- * value and its source is in docs/parameters.md. */
+ * value and its source is in docs/parameters.md.
+ *
+ * The task's own shape is not a NEAT parameter, and the defaults are the
+ * robot duel's (12 inputs, 3 outputs, 256 networks, recurrent connections
+ * allowed). For any other task set at least:
+ *
+ *     neat_params p = neat_params_default();
+ *     p.n_inputs = 3;          // the task's inputs, without the bias
+ *     p.n_outputs = 1;         // the task's outputs
+ *     p.pop_size = 150;        // the 2002 paper's size for small tasks
+ *     p.allow_recurrent = 0;   // feed-forward tasks (nrt_settle then settles)
+ *
+ * and check with neat_params_check (neat_pop_create does too). */
 enum neat_mode {
     NEAT_MODE_COMPLEXIFY = 0, /* structural mutation adds nodes and connections */
     NEAT_MODE_FIXED = 1,      /* no structural mutation */
@@ -95,8 +107,8 @@ enum neat_stagnation {
 
 typedef struct neat_params {
     uint32_t pop_size;          /* 256 (Appendix A) */
-    uint32_t n_inputs;          /* sensors, not counting the bias */
-    uint32_t n_outputs;
+    uint32_t n_inputs;          /* the task's inputs, not counting the bias (default 12: the duel's sensors) */
+    uint32_t n_outputs;         /* the task's outputs (default 3: the duel's motors) */
     int mode;                   /* enum neat_mode */
     /* compatibility: delta = c1 E / N + c2 D / N + c3 W */
     double c1, c2, c3;          /* 1, 1, 2 */
@@ -128,7 +140,7 @@ typedef struct neat_params {
     double add_conn_prob;       /* 0.1 */
     double add_node_prob;       /* 0.01 */
     uint32_t add_conn_tries;    /* attempts to find an unconnected pair */
-    int allow_recurrent;        /* 1: recurrent and self connections may be added */
+    int allow_recurrent;        /* 1 (default): recurrent and self connections may be added; 0: feed-forward only */
     uint32_t max_nodes;         /* never more nodes than the blob format allows (256) */
 } neat_params;
 
