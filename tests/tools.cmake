@@ -61,6 +61,9 @@ foreach(check bad-input trace compare)
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/duel_cli.sh $<TARGET_FILE:duel_evolve> ${check})
 endforeach()
 
+# every command's --help and -h (each option of its synopsis described), options given last without a value
+add_test(NAME tools/duel_help COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/duel_help.sh $<TARGET_FILE:duel_evolve>)
+
 # duel_evolve inspect and dot on duel_bench's blobs (counts, names, Graphviz edges, one-line errors)
 foreach(check inspect dot generic bad-input)
   add_test(NAME tools/duel_inspect_${check}
@@ -216,3 +219,6 @@ add_test(NAME tools/duel_evolve_version COMMAND duel_evolve --version)
 add_test(NAME tools/neat_bench_version COMMAND neat_bench --version)
 set_tests_properties(tools/duel_evolve_version PROPERTIES PASS_REGULAR_EXPRESSION "^duel_evolve ${PROJECT_VERSION} \\(duel world spec")
 set_tests_properties(tools/neat_bench_version PROPERTIES PASS_REGULAR_EXPRESSION "^neat_bench ${PROJECT_VERSION} \\(libneat")
+# neat_bench TASK --help: the options described (exit 0), not "--help needs a value"
+add_test(NAME tools/neat_bench_help COMMAND neat_bench xor --help)
+set_tests_properties(tools/neat_bench_help PROPERTIES PASS_REGULAR_EXPRESSION "  --dump-config +print the parameters")

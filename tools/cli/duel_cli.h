@@ -9,6 +9,13 @@
  * to f (tools/cli/duel_inspect.c). 0, or -1 after one line on stderr naming the
  * file and the problem (unreadable or invalid blob, out of memory). */
 int duel_dot_blob(FILE *f, const char *path);
+/* `duel_evolve COMMAND --help` (duel_help.c): whether argv holds --help or
+ * -h; COMMAND's synopsis and options on f (0, or -1: no such command). */
+int duel_help_wanted(int argc, char **argv);
+int duel_help(const char *command, FILE *f);
+/* An option given last, without its value: "needs a value" if it is one of
+ * takes_value (NULL-terminated), "unknown option" otherwise. Returns 2. */
+int duel_cli_missing_value(const char *command, const char *opt, const char *const *takes_value);
 
 /* `inspect` on a run directory or its checkpoint (tools/cli/duel_inspect_run.c): 0, or 2 after one line. */
 int duel_inspect_run(const char *path);

@@ -10,7 +10,7 @@
 
 static void duel_usage(FILE *f)
 {
-    fprintf(f, "usage: duel_evolve --version | --help\n"
+    fprintf(f, "usage: duel_evolve --version | --help | COMMAND --help\n"
                "       duel_evolve run --config FILE --out DIR [--set key=value ...] [--seed S] [--generations N] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
                "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
@@ -109,8 +109,12 @@ int main(int argc, char **argv)
         return duel_mpi_finish(duel_stdout_status("--help", argc < 2 ? 2 : 0));
     }
     for (i = 0; i < sizeof duel_commands / sizeof duel_commands[0]; i++)
-        if (strcmp(argv[1], duel_commands[i].name) == 0)
+        if (strcmp(argv[1], duel_commands[i].name) == 0) {
+            /* COMMAND ... --help: its options on stdout, nothing run */
+            if (duel_help_wanted(argc - 2, argv + 2) && duel_help(argv[1], stdout) == 0)
+                return duel_mpi_finish(duel_stdout_status(argv[1], 0));
             return duel_mpi_finish(duel_stdout_status(argv[1], duel_commands[i].run(argc - 2, argv + 2)));
+        }
     fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
     duel_usage(stderr);
     return duel_mpi_finish(2);

@@ -37,9 +37,9 @@ int duel_cmd_experiment(int argc, char **argv)
     int i, mode, rc, dry = 0;
 
     if (argc < 1 || argv[0][0] == '-') {
-        int help = argc >= 1 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0);
-        fprintf(help ? stdout : stderr, "%s\n", DUEL_EXP_USAGE);
-        return help ? 0 : 2;
+        /* (--help is answered before the command runs: duel_help.c) */
+        fprintf(stderr, "%s\n", DUEL_EXP_USAGE);
+        return 2;
     }
     /* mode 0: PLAN --out DIR; 1: resume DIR; 2: report DIR */
     mode = strcmp(argv[0], "resume") == 0 ? 1 : strcmp(argv[0], "report") == 0 ? 2 : 0;

@@ -70,8 +70,8 @@ static int duel_node_controller_cmd(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         const char *opt = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (v == NULL) {
-            fprintf(stderr, "duel_evolve: node controller: %s needs a value\n", opt);
-            return 2;
+            static const char *const takes[] = {"--side", "--lcm", "--wait-ms", "--timeout-ms", NULL};
+            return duel_cli_missing_value("node controller", opt, takes);
         }
         i++;
         if (strcmp(opt, "--side") == 0) {
@@ -145,8 +145,9 @@ static int duel_node_world_cmd(int argc, char **argv)
     for (i = 0; i < argc; i++) {
         const char *opt = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (v == NULL) {
-            fprintf(stderr, "duel_evolve: node world: %s needs a value\n", opt);
-            return 2;
+            static const char *const takes[] = {"--food", "--lcm", "--timeout-ms", "--wait-ms", "--period-ms",
+                                                "--lcm-log", NULL};
+            return duel_cli_missing_value("node world", opt, takes);
         }
         i++;
         if (strcmp(opt, "--food") == 0) {

@@ -29,8 +29,8 @@ int duel_cmd_play(int argc, char **argv)
     for (i = 2; i < argc; i++) {
         const char *opt = argv[i];
         if (i + 1 >= argc) {
-            fprintf(stderr, "duel_evolve: play: %s needs a value\n", opt);
-            return 2;
+            static const char *const takes[] = {"--games", "--food", "--side", "--trace", "--lcm-log", NULL};
+            return duel_cli_missing_value("play", opt, takes);
         }
         if (strcmp(opt, "--games") == 0) {
             if (strcmp(argv[++i], "288") != 0 && strcmp(argv[i], "1") != 0) {

@@ -217,8 +217,9 @@ int duel_cmd_render(int argc, char **argv)
             continue;
         }
         if (i + 1 >= argc) {
-            fprintf(stderr, "duel_evolve: render: %s needs a value\n", opt);
-            return 2;
+            static const char *const takes[] = {"--out", "--video", "--size", "--every", "--fps", "--food", "--side",
+                                                NULL};
+            return duel_cli_missing_value("render", opt, takes);
         }
         if (strcmp(opt, "--out") == 0) {
             dir = argv[++i];

@@ -613,6 +613,10 @@ static int duel_run_main(int argc, char **argv)
     duel_config_default(&R.cfg);
     for (i = 0; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (v == NULL && (strcmp(a, "--config") == 0 || strcmp(a, "--out") == 0 || strcmp(a, "--set") == 0)) {
+            fprintf(stderr, "duel_evolve run: %s needs a value\n", a);
+            return 2;
+        }
         if (strcmp(a, "--config") == 0 && v) {
             config = v;
             i++;
@@ -711,6 +715,10 @@ static int duel_resume_main(int argc, char **argv)
     memset(&R, 0, sizeof R);
     for (i = 0; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--set") == 0 && v == NULL) {
+            fprintf(stderr, "duel_evolve resume: --set needs a value\n");
+            return 2;
+        }
         if ((c = duel_common_option(&R, argc, argv, &i, &gens, &have_gens)) != 0) {
             if (c < 0)
                 return 2;
@@ -838,6 +846,10 @@ int duel_cmd_config(int argc, char **argv)
     int i, dump = 0, from_set = 0;
     duel_config_default(&cfg);
     for (i = 0; i < argc; i++) {
+        if (i + 1 >= argc && (strcmp(argv[i], "--config") == 0 || strcmp(argv[i], "--set") == 0)) {
+            fprintf(stderr, "duel_evolve config: %s needs a value\n", argv[i]);
+            return 2;
+        }
         if (strcmp(argv[i], "--dump") == 0) {
             dump = 1;
         } else if (strcmp(argv[i], "--config") == 0 && i + 1 < argc) {

@@ -1,0 +1,162 @@
+/* duel_help.c - `duel_evolve COMMAND --help`: each command's synopsis and every option it takes, described. */
+#include <string.h>
+
+#include "duel_cli.h"
+
+typedef struct duel_help_entry {
+    const char *command;
+    const char *text;
+} duel_help_entry;
+
+/* The options here are the parsers' (tests/tools/duel_help.sh checks that
+ * every option of the synopsis in `duel_evolve --help` is described). */
+static const duel_help_entry duel_help_entries[] = {
+    {"run",
+     "usage: duel_evolve run --config FILE --out DIR [options]\n"
+     "Competitive coevolution of two populations of robot-duel controllers (docs/tools.md).\n"
+     "  --config FILE            the run's configuration (INI; configs/*.ini are the presets)\n"
+     "  --out DIR                the run directory to create (checkpoint, champions/, CSVs, log.txt)\n"
+     "  --set key=value          override one parameter (or section.key=value); repeatable\n"
+     "  --seed S                 the seed (default: the configuration's)\n"
+     "  --generations N          generations to run (default: the configuration's)\n"
+     "  --threads T              threads playing the games (default 0: every core); the results do not\n"
+     "                           depend on it\n"
+     "  --quiet                  nothing on stderr but errors\n"
+     "  --json                   one JSON object per generation on stdout (docs/tools.md, \"Progress\")\n"
+     "  --record-champion-games  an LCM log of each generation champion's games (docs/lcm.md)\n"},
+    {"resume",
+     "usage: duel_evolve resume DIR [options]\n"
+     "Continues a run from its last checkpoint: the same run as never stopping.\n"
+     "  --generations N          run until N generations in all (more or fewer than config.ini's total:\n"
+     "                           the new total is logged and stored)\n"
+     "  --set key=value          override one parameter from now on (logged, stored in config.ini)\n"
+     "  --threads T              threads playing the games (default 0: every core)\n"
+     "  --quiet                  nothing on stderr but errors\n"
+     "  --json                   one JSON object per generation on stdout\n"
+     "  --record-champion-games  an LCM log of each generation champion's games\n"},
+    {"config",
+     "usage: duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
+     "Prints the whole configuration (every key, defaults filled in) as a run would use it.\n"
+     "  --dump                   print it (the only action)\n"
+     "  --config FILE            start from this INI file instead of the defaults\n"
+     "  --set key=value          override one parameter; repeatable\n"},
+    {"ladder",
+     "usage: duel_evolve ladder DIR [--top]\n"
+     "Plays every dominant strategy of a run against each built-in strategy (idle, spinner, forager,\n"
+     "hunter, forager-hunter) in 288-game comparisons and writes DIR/ladder.csv.\n"
+     "  --top                    the highest dominant only (one row)\n"},
+    {"compare",
+     "usage: duel_evolve compare RUN... --against RUN... [options]\n"
+     "The paper's performance measure: each candidate run's highest dominant against every dominant of\n"
+     "every ranking run (docs/tools.md, \"compare\").\n"
+     "  --against RUN...         the ranking runs (after the candidates)\n"
+     "  --threads T              threads playing the comparisons (default 0: every core)\n"
+     "  --json FILE              the summary and every pair as JSON\n"
+     "  --csv FILE               one row per (candidate, ranking) pair\n"
+     "  --cache FILE             one cache of played comparisons (default: each candidate's\n"
+     "                           compare-cache.csv)\n"},
+    {"experiment",
+     "usage: duel_evolve experiment PLAN --out DIR [options]\n"
+     "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"
+     "       duel_evolve experiment report DIR\n"
+     "       duel_evolve experiment PLAN --dry-run\n"
+     "The paper's section 6 from a plan: every method's runs, the performance measure, the ladders,\n"
+     "Table 1 and the figures in DIR/report/ (docs/experiment.md).\n"
+     "  --out DIR                the experiment directory to create\n"
+     "  --set key=value          override a plan key; repeatable\n"
+     "  --jobs J                 runs side by side (default 0: one per core)\n"
+     "  --threads T              threads per run (default 0: cores / jobs)\n"
+     "  --quiet                  nothing on stderr but errors\n"
+     "  --dry-run                print what the plan would run, run nothing\n"
+     "  resume DIR               continue an interrupted experiment\n"
+     "  report DIR               write the report again from the files, playing nothing\n"},
+    {"play",
+     "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
+     "[--lcm-log FILE.lcm]\n"
+     "One game (or a 288-game comparison) between A and B: champion blobs, genome files or\n"
+     "builtin:NAME (idle, spinner, forager, hunter, forager-hunter).\n"
+     "  --games 1|288            one game (default) or the comparison: every food configuration from\n"
+     "                           both sides\n"
+     "  --food K|training        the food configuration, 0..143, or the training layout (default)\n"
+     "  --side west|east         A's side (default west)\n"
+     "  --trace FILE.csv         every step's state, inputs and outputs (docs/duelsim.md)\n"
+     "  --lcm-log FILE.lcm       the game as an LCM log (docs/lcm.md)\n"},
+    {"node",
+     "usage: duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
+     "       duel_evolve node world --food K|training --lcm URL [--timeout-ms N] [--wait-ms N] "
+     "[--period-ms N] [--lcm-log FILE.lcm]\n"
+     "A game between processes over LCM (docs/lcm.md); URL is memq://, file:// or tcpq://HOST:PORT.\n"
+     "  --side west|east         the controller's robot\n"
+     "  --lcm URL                the LCM provider\n"
+     "  --food K|training        the world's food configuration\n"
+     "  --wait-ms N              how long to wait for the peers to start (default 30000)\n"
+     "  --timeout-ms N           how long a silent peer is waited for (world 1000 per step,\n"
+     "                           controller 10000)\n"
+     "  --period-ms N            the world's pace, one step per N ms (default 0: as fast as it can)\n"
+     "  --lcm-log FILE.lcm       the world records every message it publishes and accepts\n"},
+    {"log",
+     "usage: duel_evolve log info FILE.lcm\n"
+     "       duel_evolve log dump FILE.lcm [--channel C]\n"
+     "An LCM log of duels: its channels and games (info), or every message as text (dump).\n"
+     "  --channel C              only the messages of channel C\n"},
+    {"inspect",
+     "usage: duel_evolve inspect BLOB | GENOME | RUN_DIR | CHECKPOINT\n"
+     "A champion blob's or genome file's nodes and connections (a genome file's genes too), or what a\n"
+     "run's checkpoint holds (docs/tools.md, \"inspect\"). No options.\n"},
+    {"dot",
+     "usage: duel_evolve dot BLOB|GENOME [-o FILE.dot]\n"
+     "The network as Graphviz (dot -Tpng FILE.dot -o FILE.png).\n"
+     "  -o FILE.dot              write to FILE.dot (atomically) instead of stdout\n"},
+    {"render",
+     "usage: duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [options]\n"
+     "A duel's frames as PNG images (and a video), from an LCM log or from a game played now\n"
+     "(docs/render.md).\n"
+     "  --out DIR                the directory for frame-K.png\n"
+     "  --food K|training        the game's food configuration (A B only)\n"
+     "  --side west|east         A's side (A B only)\n"
+     "  --size S                 S x S pixels, 64..2048 (default 600)\n"
+     "  --every N                every Nth step's frame, and the last (default 1)\n"
+     "  --sensors                draw the rangefinder sectors\n"
+     "  --video FILE.mp4         encode the frames with ffmpeg\n"
+     "  --fps F                  the video's frames per second, 1..120 (default 30)\n"},
+    {"render-net",
+     "usage: duel_evolve render-net BLOB|GENOME --out FILE.png\n"
+     "The network drawn by Graphviz as a PNG (docs/render.md).\n"
+     "  --out FILE.png           the image to write (atomically)\n"},
+    {"export",
+     "usage: duel_evolve export BLOB|GENOME --c-array NAME [-o FILE.c]\n"
+     "The champion as a C array for a firmware (docs/firmware.md).\n"
+     "  --c-array NAME           the array's name (a C identifier)\n"
+     "  -o FILE.c                write to FILE.c (atomically) instead of stdout\n"},
+};
+
+int duel_help_wanted(int argc, char **argv)
+{
+    int i;
+    for (i = 0; i < argc; i++)
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
+            return 1;
+    return 0;
+}
+
+int duel_help(const char *command, FILE *f)
+{
+    size_t i;
+    for (i = 0; i < sizeof duel_help_entries / sizeof duel_help_entries[0]; i++)
+        if (strcmp(command, duel_help_entries[i].command) == 0) {
+            fputs(duel_help_entries[i].text, f);
+            return 0;
+        }
+    return -1;
+}
+
+int duel_cli_missing_value(const char *command, const char *opt, const char *const *takes_value)
+{
+    for (; *takes_value != NULL; takes_value++)
+        if (strcmp(opt, *takes_value) == 0) {
+            fprintf(stderr, "duel_evolve: %s: %s needs a value\n", command, opt);
+            return 2;
+        }
+    fprintf(stderr, "duel_evolve: %s: unknown option '%s' (duel_evolve %s --help)\n", command, opt, command);
+    return 2;
+}
