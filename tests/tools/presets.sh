@@ -168,6 +168,15 @@ random)
   [ "$(col "$tmp/r1/generations.csv" max_connections | tail -1)" -gt 39 ] || fail "no growth: $last"
   ;;
 config)
+  # reals in their shortest exact form, which reads back to the same configuration
+  "$duel" config --dump --config "$configs/paper.ini" > "$tmp/paper.ini"
+  grep -qx "delta_t_step = 0.3" "$tmp/paper.ini" || fail "config --dump: $(grep delta_t_step "$tmp/paper.ini")"
+  ! grep -qE "= [0-9.]*[0-9]{15,}" "$tmp/paper.ini" || fail "long numbers: $(grep -E "= [0-9.]{15,}" "$tmp/paper.ini")"
+  "$duel" config --dump --config "$tmp/paper.ini" --set weight_perturb_power=0.1 --set c3=0.30000000000000004 \
+    > "$tmp/again.ini"
+  grep -qx "weight_perturb_power = 0.1" "$tmp/again.ini" && grep -qx "c3 = 0.30000000000000004" "$tmp/again.ini" ||
+    fail "shortest form: $(grep -E "^(c3|weight_perturb_power) " "$tmp/again.ini")"
+  "$duel" config --dump --config "$tmp/again.ini" | cmp - "$tmp/again.ini" || fail "the dump does not read back"
   # the rule coevolution cannot use, and the start's syntax
   expect_bad "pop_stagnation must be 0 in coevolution" config --dump --set pop_stagnation=35
   expect_bad "hidden:H:inputs or hidden:H:bias with H in 1..240" config --dump --set start=hidden:0:bias

@@ -8,6 +8,7 @@
 #include "duel_cli.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
+#include "neat_config.h"
 
 /* Names of the duel's inputs (docs/duelsim.md, sensors in the spec's order;
  * rangefinder sector k is centred on heading + k * 72 degrees counter-clockwise)
@@ -273,9 +274,11 @@ static int duel_inspect_genome(const char *path)
     printf("genome outputs: %u\n", (unsigned)no);
     printf("node genes: %u (%u hidden)\n", (unsigned)g.n_nodes, (unsigned)neat_genome_hidden_count(&g));
     printf("connection genes: %u (%u disabled)\n", (unsigned)g.n_conns, (unsigned)disabled);
-    if (g.has_fitness)
-        printf("fitness: %.17g\n", g.fitness);
-    else
+    if (g.has_fitness) {
+        char num[NEAT_FMT_DOUBLE];
+        neat_fmt_double(num, g.fitness);
+        printf("fitness: %s\n", num);
+    } else
         printf("fitness: none\n");
     printf("node genes (id, type):\n");
     for (i = 0; i < g.n_nodes; i++) {
@@ -284,10 +287,13 @@ static int duel_inspect_genome(const char *path)
                g.nodes[i].type <= 3 ? kind[g.nodes[i].type] : "?");
     }
     printf("connection genes (innovation, in -> out, weight, enabled):\n");
-    for (i = 0; i < g.n_conns; i++)
-        printf("gene conn %6lu  %5lu -> %5lu  weight %.17g%s\n", (unsigned long)g.conns[i].innov,
-               (unsigned long)g.conns[i].in, (unsigned long)g.conns[i].out, g.conns[i].weight,
+    for (i = 0; i < g.n_conns; i++) {
+        char num[NEAT_FMT_DOUBLE];
+        neat_fmt_double(num, g.conns[i].weight);
+        printf("gene conn %6lu  %5lu -> %5lu  weight %s%s\n", (unsigned long)g.conns[i].innov,
+               (unsigned long)g.conns[i].in, (unsigned long)g.conns[i].out, num,
                g.conns[i].enabled ? "" : "  disabled");
+    }
     printf("its network, as the runtime runs it (the blob it encodes to):\n");
     neat_genome_free(&g, NULL);
     return 0;

@@ -206,6 +206,19 @@ int neat_config_set(neat_params *p, const char *key, const char *value, char *er
     return neat_config_set_in(neat_keys, NEAT_N_KEYS, p, key, value, err, err_len);
 }
 
+void neat_fmt_double(char buf[NEAT_FMT_DOUBLE], double x)
+{
+    int prec;
+    /* the fewest significant digits that read back to the same double:
+     * 0.3, not 0.29999999999999999 (17 digits always do) */
+    for (prec = 1; prec < 17; prec++) {
+        snprintf(buf, NEAT_FMT_DOUBLE, "%.*g", prec, x);
+        if (strtod(buf, NULL) == x)
+            return;
+    }
+    snprintf(buf, NEAT_FMT_DOUBLE, "%.17g", x);
+}
+
 void neat_config_dump_keys(FILE *out, const neat_cfg_key *keys, size_t n_keys, const void *base)
 {
     size_t i;
@@ -215,10 +228,12 @@ void neat_config_dump_keys(FILE *out, const neat_cfg_key *keys, size_t n_keys, c
         case NEAT_CFG_U32:
             fprintf(out, "%s = %u\n", keys[i].name, (unsigned)*(const uint32_t *)field);
             break;
-        case NEAT_CFG_F64:
-            /* 17 significant digits: reads back to the same double */
-            fprintf(out, "%s = %.17g\n", keys[i].name, *(const double *)field);
+        case NEAT_CFG_F64: {
+            char num[NEAT_FMT_DOUBLE];
+            neat_fmt_double(num, *(const double *)field);
+            fprintf(out, "%s = %s\n", keys[i].name, num);
             break;
+        }
         case NEAT_CFG_BOOL:
             fprintf(out, "%s = %s\n", keys[i].name, *(const int *)field ? "true" : "false");
             break;

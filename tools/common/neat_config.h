@@ -35,6 +35,11 @@ int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value
 /* Sets key from a table; -1 with a "did you mean" in err if unknown. */
 int neat_config_set_in(const neat_cfg_key *keys, size_t n_keys, void *base, const char *key, const char *value,
                        char *err, size_t err_len);
+/* Every key as "name = value", reals in their shortest exact form. */
 void neat_config_dump_keys(FILE *out, const neat_cfg_key *keys, size_t n_keys, const void *base);
+/* x in the fewest significant digits (at most 17) that read back to x
+ * exactly: 0.3 prints "0.3". */
+#define NEAT_FMT_DOUBLE 32
+void neat_fmt_double(char buf[NEAT_FMT_DOUBLE], double x);
 
 #endif /* NEAT_CONFIG_H */

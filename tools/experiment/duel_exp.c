@@ -96,8 +96,11 @@ static int duel_exp_check_runs(const duel_plan *p, const char *dir)
         have = (uint8_t *)realloc(have, len + 1);
         if (have != NULL) {
             uint32_t line;
+            char *canon = duel_plan_cfg_canonical(path);
             have[len] = '\0';
-            line = duel_plan_diff((const char *)have, want, have_line, want_line, sizeof have_line);
+            line = duel_plan_diff(canon != NULL ? canon : (const char *)have, want, have_line, want_line,
+                                  sizeof have_line);
+            free(canon);
             if (line != 0) {
                 fprintf(stderr, "duel_evolve: experiment: %s/%s belongs to another plan: line %u is '%s', the plan "
                                 "gives '%s'\n", dir, path, line, have_line, want_line);
@@ -212,6 +215,14 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
                 return 1;
             }
             have[n] = '\0';
+            {
+                /* compared as this build writes it: an earlier build's form of the same values is the same */
+                char *canon = duel_plan_cfg_canonical(path);
+                if (canon != NULL) {
+                    free(have);
+                    have = (uint8_t *)canon;
+                }
+            }
             if (duel_plan_diff((const char *)have, p->m[i].cfg_text, la, lb, sizeof la) != 0) {
                 fprintf(stderr, "duel_evolve: experiment: %s/%s differs from what the plan's preset gives now "
                                 "('%s' there, '%s' now): a changed plan needs a new directory\n", dir, path, la, lb);

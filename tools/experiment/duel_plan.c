@@ -418,6 +418,16 @@ int duel_plan_save(const duel_plan *p, const char *dir)
     return 0;
 }
 
+char *duel_plan_cfg_canonical(const char *path)
+{
+    duel_config c;
+    char err[600];
+    duel_config_default(&c);
+    if (duel_config_read(&c, path, err, sizeof err) != 0)
+        return NULL;
+    return duel_plan_cfg_text(&c);
+}
+
 char *duel_plan_run_config(const duel_plan *p, uint32_t i, uint32_t k)
 {
     duel_config c = p->m[i].cfg;

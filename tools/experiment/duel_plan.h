@@ -59,6 +59,11 @@ int duel_plan_save(const duel_plan *p, const char *dir);
 
 /* The config.ini text run k (1-based) of method i must have (its seed set), malloc'd, NULL when out of memory. */
 char *duel_plan_run_config(const duel_plan *p, uint32_t i, uint32_t k);
+/* The configuration file at path as this build writes it (read, then
+ * dumped): a file an earlier build wrote, its reals in another form (0.3 as
+ * 0.29999999999999999), compares equal to the plan's text. NULL (malloc'd
+ * otherwise) if it does not read: compare its own bytes then. */
+char *duel_plan_cfg_canonical(const char *path);
 /* The first line where a and b differ (1-based; 0: equal), and that line of each into la and lb. */
 uint32_t duel_plan_diff(const char *a, const char *b, char *la, char *lb, size_t cap);
 
