@@ -164,7 +164,7 @@ const char *duel_outcome_text(int outcome)
     case DUEL_WEST_WINS: return "west wins (collision, more energy)";
     case DUEL_EAST_WINS: return "east wins (collision, more energy)";
     case DUEL_DRAW: return "draw (collision at equal energy)";
-    case DUEL_TIMEOUT: return "timeout (no collision in 750 steps)";
+    case DUEL_TIMEOUT: return "timeout (no collision)";
     default: return "unfinished";
     }
 }

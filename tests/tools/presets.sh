@@ -44,7 +44,7 @@ fixed)
   exact_sizes "$tmp/f10" 6 10 263
   "$duel" run --config "$configs/fixed-5.ini" "${small[@]}" --generations 6 --out "$tmp/f5"
   exact_sizes "$tmp/f5" 6 5 144
-  grep -q "start hidden:5:inputs (5 hidden, 144 connections)" "$tmp/f5/log.txt" || fail "log: $(cat "$tmp/f5/log.txt")"
+  grep -q "start hidden:5:inputs (5 hidden nodes, 144 connections)" "$tmp/f5/log.txt" || fail "log: $(cat "$tmp/f5/log.txt")"
   grep -q "^start = hidden:5:inputs$" "$tmp/f5/config.ini" || fail "config.ini does not record the start"
   "$duel" inspect "$tmp/f5" | grep -q "population A: 16 genomes .* hidden 5..5, connections 144..144; innovations in use 0..143, next 144" ||
     fail "inspect: $("$duel" inspect "$tmp/f5")"

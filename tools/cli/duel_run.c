@@ -262,24 +262,45 @@ static void duel_eta(char *out, size_t cap, double secs)
         snprintf(out, cap, "%lds", s);
 }
 
+/* "1 hidden node", "2 hidden nodes" */
+static const char *duel_s(uint32_t n)
+{
+    return n == 1 ? "" : "s";
+}
+
+/* The threads a run plays on, in words: "2 threads", or "all 4 cores" for 0. */
+static void duel_threads_words(uint32_t threads, char *buf, size_t cap)
+{
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    if (threads == 0)
+        snprintf(buf, cap, "all %ld core%s", cores > 0 ? cores : 1L, cores == 1 ? "" : "s");
+    else
+        snprintf(buf, cap, "%u thread%s", threads, duel_s(threads));
+}
+
 static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
 {
     neat_dominant d;
+    /* what the scores are out of: a host's games (its fitness is its wins), a comparison's games */
+    uint32_t host_games = (uint32_t)(rep->pop[0].games / (R->cfg.neat.pop_size ? R->cfg.neat.pop_size : 1u));
+    uint32_t cmp_games = 2u * R->cfg.coev.compare_configs, cw = rep->champion_pop;
+    uint32_t dh, dc;
     uint32_t gens_done = rep->generation + 1u - R->first_gen, left = R->cfg.generations - rep->generation - 1u;
     double elapsed = duel_now() - R->started, gps = secs > 0 ? rep->games / secs : 0;
     char eta[32];
     neat_coev_dominant(R->coev, rep->dominants - 1u, &d);
+    dh = neat_genome_hidden_count(d.genome);
+    dc = neat_genome_enabled_count(d.genome);
     duel_eta(eta, sizeof eta, elapsed / gens_done * left);
     duel_clear_bar(R);
     if (!R->quiet)
         fprintf(stderr,
-                "gen %u (%u/%u)  best A %.0f B %.0f  species A %u B %u  champion %s %u:%u  dominance %u%s (%u hidden, "
-                "%u conns)  %.0f games/s  ETA %s\n",
-                rep->generation, rep->generation + 1u, R->cfg.generations, rep->pop[0].best_fitness, rep->pop[1].best_fitness,
-                rep->pop[0].species, rep->pop[1].species, duel_pop_name(rep->champion_pop),
-                rep->champion_wins[rep->champion_pop], rep->champion_wins[rep->champion_pop ^ 1u], rep->dominants,
-                rep->new_dominant ? " new" : "", neat_genome_hidden_count(d.genome),
-                neat_genome_enabled_count(d.genome), gps, eta);
+                "gen %u (%u/%u)  best A %.0f/%u B %.0f/%u wins  species A %u B %u  champion %s %u:%u of %u  "
+                "dominance %u%s (%u hidden, %u conns)  %.0f games/s  ETA %s\n",
+                rep->generation, rep->generation + 1u, R->cfg.generations, rep->pop[0].best_fitness, host_games,
+                rep->pop[1].best_fitness, host_games, rep->pop[0].species, rep->pop[1].species, duel_pop_name(cw),
+                rep->champion_wins[cw], rep->champion_wins[cw ^ 1u], cmp_games, rep->dominants,
+                rep->new_dominant ? " new" : "", dh, dc, gps, eta);
     if (R->json) {
         uint32_t p;
         printf("{\"generation\":%u,\"pop\":[", rep->generation);
@@ -294,16 +315,16 @@ static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
                "\"dominant_hidden\":%u,\"dominant_connections\":%u,\"games\":%llu,\"seconds\":%.3f,"
                "\"games_per_s\":%.0f,\"eta_s\":%.0f}\n",
                duel_pop_name(rep->champion_pop), rep->champion_wins[0], rep->champion_wins[1], rep->dominants,
-               rep->new_dominant ? "true" : "false", neat_genome_hidden_count(d.genome),
-               neat_genome_enabled_count(d.genome), (unsigned long long)rep->games, secs, gps,
+               rep->new_dominant ? "true" : "false", dh, dc, (unsigned long long)rep->games, secs, gps,
                elapsed / gens_done * left);
         fflush(stdout);
     }
-    duel_log(R, "generation %u: best A %.0f B %.0f, species A %u B %u, champion %s (%u:%u), dominance %u%s, "
-                "%llu games in %.2f s",
-             rep->generation, rep->pop[0].best_fitness, rep->pop[1].best_fitness, rep->pop[0].species,
-             rep->pop[1].species, duel_pop_name(rep->champion_pop), rep->champion_wins[0], rep->champion_wins[1],
-             rep->dominants, rep->new_dominant ? " (new)" : "", (unsigned long long)rep->games, secs);
+    duel_log(R, "generation %u: best A %.0f/%u B %.0f/%u wins, species A %u B %u, champion %s %u:%u of %u, "
+                "dominance %u (%s%u hidden node%s, %u connection%s), %llu games in %.2f s",
+             rep->generation, rep->pop[0].best_fitness, host_games, rep->pop[1].best_fitness, host_games,
+             rep->pop[0].species, rep->pop[1].species, duel_pop_name(cw), rep->champion_wins[cw],
+             rep->champion_wins[cw ^ 1u], cmp_games, rep->dominants, rep->new_dominant ? "new: " : "", dh,
+             duel_s(dh), dc, duel_s(dc), (unsigned long long)rep->games, secs);
 }
 
 
@@ -354,19 +375,20 @@ static int duel_loop(duel_run *R)
     }
     {
         neat_dominant d;
-        uint32_t n = neat_coev_dominant_count(R->coev);
+        uint32_t n = neat_coev_dominant_count(R->coev), dh, dc;
         neat_coev_dominant(R->coev, n - 1u, &d);
-        duel_log(R, "finished %u generations: dominance level %u, top dominant from generation %u (%u hidden, %u "
-                    "connections)",
-                 R->cfg.generations, n, d.generation, neat_genome_hidden_count(d.genome),
-                 neat_genome_enabled_count(d.genome));
+        dh = neat_genome_hidden_count(d.genome);
+        dc = neat_genome_enabled_count(d.genome);
+        duel_log(R, "finished %u generation%s: dominance level %u, top dominant from generation %u (%u hidden node%s, "
+                    "%u connection%s)",
+                 R->cfg.generations, duel_s(R->cfg.generations), n, d.generation, dh, duel_s(dh), dc, duel_s(dc));
         if (R->log_failed)
             return 1;
         if (!R->quiet)
-            fprintf(stderr, "done: %u generations in %s; dominance level %u; top dominant: generation %u, %u "
-                            "hidden nodes, %u connections (champions/gen-%05u.blob)\n",
-                    R->cfg.generations, R->dir, n, d.generation, neat_genome_hidden_count(d.genome),
-                    neat_genome_enabled_count(d.genome), d.generation);
+            fprintf(stderr, "done: %u generation%s in %s; dominance level %u; top dominant: generation %u, %u "
+                            "hidden node%s, %u connection%s (champions/gen-%05u.blob)\n",
+                    R->cfg.generations, duel_s(R->cfg.generations), R->dir, n, d.generation, dh, duel_s(dh), dc,
+                    duel_s(dc), d.generation);
     }
     return 0;
 }
@@ -531,9 +553,10 @@ static void duel_start_words(const duel_run *R, char *buf, size_t cap)
 {
     char st[DUEL_START_MAX_PATH + 16];
     const neat_genome *g = neat_coev_start(R->coev);
+    uint32_t h = neat_genome_hidden_count(g), c = neat_genome_enabled_count(g);
     duel_start_text(&R->cfg.start, st, sizeof st);
-    snprintf(buf, cap, "start %s (%u hidden, %u connections)%s", st, neat_genome_hidden_count(g),
-             neat_genome_enabled_count(g), R->cfg.coev.random_fitness ? ", random fitness" : "");
+    snprintf(buf, cap, "start %s (%u hidden node%s, %u connection%s)%s", st, h, duel_s(h), c, duel_s(c),
+             R->cfg.coev.random_fitness ? ", random fitness" : "");
 }
 
 /* A new run's directory: created and locked, refused when it holds a run
@@ -669,8 +692,9 @@ static int duel_run_main(int argc, char **argv)
         neat_coev_free(R.coev);
         return e;
     }
-    duel_log(&R, "run: config %s, seed %u, %u generations, %u threads", config, R.cfg.seed, R.cfg.generations,
-             R.threads);
+    duel_threads_words(R.threads, words, sizeof words);
+    duel_log(&R, "run: config %s, seed %u, %u generation%s, %s", config, R.cfg.seed, R.cfg.generations,
+             duel_s(R.cfg.generations), words);
     for (k = 0; k < n_sets; k++)
         duel_log(&R, "run: override %s", sets[k]);
     duel_start_words(&R, words, sizeof words);
@@ -832,7 +856,11 @@ static int duel_resume_main(int argc, char **argv)
         neat_coev_free(R.coev);
         return 1;
     }
-    duel_log(&R, "resume at generation %u of %u, %u threads", g, R.cfg.generations, R.threads);
+    {
+        char th[64];
+        duel_threads_words(R.threads, th, sizeof th);
+        duel_log(&R, "resume at generation %u of %u, %s", g, R.cfg.generations, th);
+    }
     if (!R.quiet)
         fprintf(stderr, "resuming %s at generation %u of %u\n", R.dir, g, R.cfg.generations);
     return duel_go(&R);
