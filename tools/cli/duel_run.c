@@ -21,17 +21,13 @@
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
 #include "duel_mpi.h"
+#include "duel_signal.h"
 #include "neat_coev.h"
 #include "neat_phenotype.h"
 
 /* Set by SIGINT/SIGTERM: the generation in progress finishes and is saved. */
 static volatile sig_atomic_t duel_stop = 0;
 
-static void duel_on_signal(int sig)
-{
-    (void)sig;
-    duel_stop = 1;
-}
 
 typedef struct duel_run {
     const char *dir;
@@ -331,12 +327,8 @@ static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
 /* Generations until the configured count, a signal or an error. */
 static int duel_loop(duel_run *R)
 {
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = duel_on_signal;
-    sa.sa_flags = (int)SA_RESETHAND; /* a second Ctrl-C stops at once */
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    duel_signal_install(&duel_stop, "duel_evolve: a second signal: stopped at once; the last checkpoint stands "
+                                    "(duel_evolve resume continues from it)\n");
     R->tty = isatty(2);
     R->started = duel_now();
     R->first_gen = neat_coev_generation(R->coev);

@@ -19,16 +19,12 @@
 #include "duel_generations.h"
 #include "duel_mpi.h"
 #include "duel_perf.h"
+#include "duel_signal.h"
 #include "neat_coev.h"
 
 /* Set by SIGINT/SIGTERM: the runs finish their generation and stop (they get the signal too). */
 static volatile sig_atomic_t duel_exp_stop = 0;
 
-static void duel_exp_on_signal(int sig)
-{
-    (void)sig;
-    duel_exp_stop = 1;
-}
 
 void duel_exp_run_dir(char *out, size_t cap, const duel_plan *p, uint32_t i, uint32_t k)
 {
@@ -939,7 +935,6 @@ static int duel_exp_ladders(const duel_exp_sched *s, const char *self, uint32_t 
 int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
 {
     duel_exp_sched s;
-    struct sigaction sa;
     char self[4096];
     uint32_t i, k, jobs, threads, cores;
     long nproc = sysconf(_SC_NPROCESSORS_ONLN);
@@ -994,11 +989,8 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
     else if (!o->quiet)
         fprintf(stderr, "experiment %s: %u methods, %u runs (%u done), %u side by side with %u thread%s each\n", dir,
                 p->n_methods, s.n_runs, s.done, jobs, threads, threads == 1 ? "" : "s");
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = duel_exp_on_signal;
-    sa.sa_flags = (int)SA_RESETHAND; /* a second Ctrl-C stops at once (the runs keep their last generation) */
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    duel_signal_install(&duel_exp_stop, "duel_evolve: experiment: a second signal: stopped at once; the runs keep "
+                                        "their last generation (duel_evolve experiment resume continues)\n");
     if (duel_mpi_size() > 1)
         rc = duel_exp_play_mpi(&s);
     else
