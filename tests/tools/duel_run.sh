@@ -68,6 +68,13 @@ overrides)
   grep -q "^hof_opponents = 6" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
   grep -q "^generations = 5" "$tmp/o/config.ini" || { echo "generations not stored"; exit 1; }
   [ "$(ls "$tmp/o/champions/"*.blob | wc -l)" -eq 5 ] || { echo "not extended to 5 generations"; exit 1; }
+  grep -q "resume: generations 3 -> 5 (extended; config.ini now says 5)" "$tmp/o/log.txt" || fail "extension not logged"
+  # fewer generations than the run's total: only with --shorten, and never fewer than it has played
+  expect_bad "the run has 5 generations in all (config.ini); 4 would shorten it for good: add --shorten" \
+    resume "$tmp/o" --generations 4
+  expect_bad "the run has played 5 generations already, more than 4" resume "$tmp/o" --generations 4 --shorten
+  expect_bad "--shorten with 6 generations, not fewer than the run's 5" resume "$tmp/o" --generations 6 --shorten
+  grep -q "^generations = 5" "$tmp/o/config.ini" || fail "a refused resume changed config.ini"
   expect_bad "pop_size cannot change" resume "$tmp/o" --set pop_size=40
   expect_bad "seed cannot change" resume "$tmp/o" --set seed=9
   expect_bad "unknown key 'add_nod_prob' (did you mean 'add_node_prob'?)" resume "$tmp/o" --set add_nod_prob=1

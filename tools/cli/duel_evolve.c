@@ -13,7 +13,7 @@ static void duel_usage(FILE *f)
     fprintf(f, "usage: duel_evolve --version | --help | COMMAND --help\n"
                "       duel_evolve run --config FILE --out DIR [--set key=value ...] [--seed S] [--generations N] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
-               "       duel_evolve resume DIR [--generations N] [--set key=value ...] [--threads T] [--quiet] "
+               "       duel_evolve resume DIR [--generations N [--shorten]] [--set key=value ...] [--threads T] [--quiet] "
                "[--json] [--record-champion-games]\n"
                "       duel_evolve config --dump [--config FILE] [--set key=value ...]\n"
                "       duel_evolve ladder DIR [--top]\n"

@@ -27,8 +27,9 @@ static const duel_help_entry duel_help_entries[] = {
     {"resume",
      "usage: duel_evolve resume DIR [options]\n"
      "Continues a run from its last checkpoint: the same run as never stopping.\n"
-     "  --generations N          run until N generations in all (more or fewer than config.ini's total:\n"
-     "                           the new total is logged and stored)\n"
+     "  --generations N          run until N generations in all: more than config.ini's total extends\n"
+     "                           the run (logged, stored in config.ini); fewer needs --shorten\n"
+     "  --shorten                with --generations N below the run's total: shorten it for good\n"
      "  --set key=value          override one parameter from now on (logged, stored in config.ini)\n"
      "  --threads T              threads playing the games (default 0: every core)\n"
      "  --quiet                  nothing on stderr but errors\n"

@@ -725,7 +725,7 @@ static int duel_resume_main(int argc, char **argv)
     duel_run R;
     char err[600], path[4200], *sets[64];
     uint32_t gens = 0, n_sets = 0, k, g;
-    int i, c, have_gens = 0, e;
+    int i, c, have_gens = 0, shorten = 0, e;
     duel_config before;
 
     memset(&R, 0, sizeof R);
@@ -738,14 +738,16 @@ static int duel_resume_main(int argc, char **argv)
         if ((c = duel_common_option(&R, argc, argv, &i, &gens, &have_gens)) != 0) {
             if (c < 0)
                 return 2;
+        } else if (strcmp(a, "--shorten") == 0) {
+            shorten = 1;
         } else if (strcmp(a, "--set") == 0 && v && n_sets < 64) {
             sets[n_sets++] = argv[++i];
         } else if (a[0] != '-' && R.dir == NULL) {
             R.dir = a;
         } else {
             fprintf(stderr, "duel_evolve resume: unknown option '%s' (usage: duel_evolve resume DIR [--generations "
-                            "N] [--set key=value ...] [--threads T] [--quiet] [--json] [--record-champion-games])\n",
-                    a);
+                            "N [--shorten]] [--set key=value ...] [--threads T] [--quiet] [--json] "
+                            "[--record-champion-games])\n", a);
             return 2;
         }
     }
@@ -774,6 +776,17 @@ static int duel_resume_main(int argc, char **argv)
         }
     if (have_gens)
         R.cfg.generations = gens;
+    /* the run's total changes only when asked: fewer generations than config.ini's needs --shorten */
+    if (R.cfg.generations < before.generations && !shorten) {
+        fprintf(stderr, "duel_evolve: resume: the run has %u generations in all (config.ini); %u would shorten it "
+                        "for good: add --shorten to mean that\n", before.generations, R.cfg.generations);
+        return 2;
+    }
+    if (shorten && R.cfg.generations >= before.generations) {
+        fprintf(stderr, "duel_evolve: resume: --shorten with %u generations, not fewer than the run's %u\n",
+                R.cfg.generations, before.generations);
+        return 2;
+    }
     if (R.cfg.seed != before.seed) {
         fprintf(stderr, "duel_evolve: --set seed: a run's seed cannot change; start a new run instead\n");
         return 2;
@@ -842,8 +855,20 @@ static int duel_resume_main(int argc, char **argv)
     }
     for (k = 0; k < n_sets; k++)
         duel_log(&R, "resume: override %s", sets[k]);
-    if (have_gens)
-        duel_log(&R, "resume: generations %u", R.cfg.generations);
+    if (g > R.cfg.generations) {
+        fprintf(stderr, "duel_evolve: resume: the run has played %u generations already, more than %u\n", g,
+                R.cfg.generations);
+        neat_coev_free(R.coev);
+        return 2;
+    }
+    if (R.cfg.generations != before.generations) {
+        const char *how = R.cfg.generations > before.generations ? "extended" : "shortened";
+        duel_log(&R, "resume: generations %u -> %u (%s; config.ini now says %u)", before.generations,
+                 R.cfg.generations, how, R.cfg.generations);
+        if (!R.quiet)
+            fprintf(stderr, "%s %s from %u to %u generations (stored in config.ini)\n", R.dir, how,
+                    before.generations, R.cfg.generations);
+    }
     if (duel_write_config(&R) != 0) {
         neat_coev_free(R.coev);
         return 1;
