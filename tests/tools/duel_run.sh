@@ -128,6 +128,37 @@ ladder)
   grep -q "wins" "$tmp/play.txt" || { echo "play printed no wins"; exit 1; }
   got=$(grep -o "wins [0-9]*" "$tmp/play.txt" | head -2 | grep -o "[0-9]*" | paste -sd:)
   [ "$got" = "$want" ] || { echo "ladder says $want against forager, play says $got"; cat "$tmp/play.txt"; exit 1; }
+  # play --json: the same numbers
+  "$duel" play "$tmp/l/champions/gen-$(printf %05d "$gen").blob" builtin:forager --games 288 --json > "$tmp/play.json"
+  python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print("%d:%d" % (d["a_wins"], d["b_wins"]))' \
+    "$tmp/play.json" | grep -qx "$want" || fail "play --json: $(cat "$tmp/play.json"), expected $want"
+  "$duel" play builtin:forager builtin:idle --json | python3 -c 'import json, sys; d = json.load(sys.stdin)
+assert d["games"] == 1 and d["food"] == "training" and d["west"] == "builtin:forager", d
+assert d["outcome"] in ("west_wins", "east_wins", "draw", "timeout") and len(d["energy"]) == 2, d' ||
+    fail "play --json of one game"
+  # a part of the ladder: the levels and strategies asked for, as JSON, ladder.csv left whole
+  cp "$tmp/l/ladder.csv" "$tmp/whole.csv"
+  "$duel" ladder "$tmp/l" --levels 1 --against forager,idle --json > "$tmp/part.json"
+  cmp -s "$tmp/whole.csv" "$tmp/l/ladder.csv" || fail "a partial ladder rewrote ladder.csv"
+  python3 - "$tmp/part.json" "$tmp/whole.csv" <<'PY' || fail "ladder --json: $(cat "$tmp/part.json")"
+import csv, json, sys
+d = json.load(open(sys.argv[1]))
+row = next(csv.DictReader(open(sys.argv[2])))
+assert d["against"] == ["forager", "idle"] and d["games"] == 288 and len(d["levels"]) == 1, d
+lv = d["levels"][0]
+assert lv["level"] == 1 and lv["generation"] == int(row["generation"]), (lv, row)
+for name in ("forager", "idle"):
+    r = lv["results"][name]
+    assert (r["wins"], r["losses"]) == (int(row[name + "_wins"]), int(row[name + "_losses"])), (name, r, row)
+    assert r["wins"] + r["losses"] + r["draws"] + r["timeouts"] == 288, r
+assert lv["total_wins"] == sum(lv["results"][n]["wins"] for n in ("forager", "idle"))
+PY
+  "$duel" ladder "$tmp/l" --levels 1 --against idle --csv "$tmp/part.csv" > /dev/null
+  head -1 "$tmp/part.csv" | grep -qx "level,generation,population,hidden,connections,idle_wins,idle_losses,total_wins,total_losses" ||
+    fail "ladder --csv: $(head -1 "$tmp/part.csv")"
+  expect_bad "has $levels dominance level" ladder "$tmp/l" --levels "1-$((levels + 1))"
+  expect_bad "--against takes built-in strategies" ladder "$tmp/l" --against idle,nobody
+  expect_bad "--top and --levels" ladder "$tmp/l" --top --levels 1
   expect_bad "dominance.csv: cannot open" ladder "$tmp/none"
   ;;
 *)

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "duel_cli.h"
+#include "duel_json.h"
 #include "duel_config.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
@@ -31,21 +32,6 @@ static duel_cmp_stats duel_cmp_stat(const double *v, size_t n)
         s.sd += (v[k] - s.mean) * (v[k] - s.mean) / (double)(n - 1);
     s.sd = sqrt(s.sd);
     return s;
-}
-
-static void duel_json_str(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) {
-        unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\')
-            fprintf(f, "\\%c", ch);
-        else if (ch < 0x20)
-            fprintf(f, "\\u%04x", ch);
-        else
-            fputc(ch, f);
-    }
-    fputc('"', f);
 }
 
 static void duel_cmp_write_csv(FILE *f, const void *ctx)

@@ -42,10 +42,15 @@ static const duel_help_entry duel_help_entries[] = {
      "  --config FILE            start from this INI file instead of the defaults\n"
      "  --set key=value          override one parameter; repeatable\n"},
     {"ladder",
-     "usage: duel_evolve ladder DIR [--top]\n"
+     "usage: duel_evolve ladder DIR [--top | --levels L1-L2] [--against NAME,...] [--csv FILE] [--json]\n"
      "Plays every dominant strategy of a run against each built-in strategy (idle, spinner, forager,\n"
-     "hunter, forager-hunter) in 288-game comparisons and writes DIR/ladder.csv.\n"
-     "  --top                    the highest dominant only (one row)\n"},
+     "hunter, forager-hunter) in 288-game comparisons and writes DIR/ladder.csv and a table.\n"
+     "  --top                    the highest dominant only (one row)\n"
+     "  --levels L1-L2           dominance levels L1 to L2 only (or one level L)\n"
+     "  --against NAME,...       these built-in strategies only, in this order\n"
+     "  --csv FILE               the CSV to FILE (a part of the ladder, from --levels or --against, is\n"
+     "                           written only there: DIR/ladder.csv keeps the whole ladder)\n"
+     "  --json                   the results as one JSON object on stdout instead of the table\n"},
     {"compare",
      "usage: duel_evolve compare RUN... --against RUN... [options]\n"
      "The paper's performance measure: each candidate run's highest dominant against every dominant of\n"
@@ -73,7 +78,7 @@ static const duel_help_entry duel_help_entries[] = {
      "  report DIR               write the report again from the files, playing nothing\n"},
     {"play",
      "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
-     "[--lcm-log FILE.lcm]\n"
+     "[--lcm-log FILE.lcm] [--json]\n"
      "One game (or a 288-game comparison) between A and B: champion blobs, genome files or\n"
      "builtin:NAME (idle, spinner, forager, hunter, forager-hunter).\n"
      "  --games 1|288            one game (default) or the comparison: every food configuration from\n"
@@ -81,7 +86,8 @@ static const duel_help_entry duel_help_entries[] = {
      "  --food K|training        the food configuration, 0..143, or the training layout (default)\n"
      "  --side west|east         A's side (default west)\n"
      "  --trace FILE.csv         every step's state, inputs and outputs (docs/duelsim.md)\n"
-     "  --lcm-log FILE.lcm       the game as an LCM log (docs/lcm.md)\n"},
+     "  --lcm-log FILE.lcm       the game as an LCM log (docs/lcm.md)\n"
+     "  --json                   the result as one JSON object on stdout (docs/tools.md, \"play --json\")\n"},
     {"node",
      "usage: duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
      "       duel_evolve node world --food K|training --lcm URL [--timeout-ms N] [--wait-ms N] "

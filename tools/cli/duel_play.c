@@ -6,21 +6,63 @@
 #include "duel_cli.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
+#include "duel_json.h"
 #include "duel_lcm.h"
 #include "duel_trace.h"
 
 static void duel_play_usage(void)
 {
     fprintf(stderr, "usage: duel_evolve play A B [--games 288 | --food K|training --side west|east] [--trace FILE.csv] "
-                    "[--lcm-log FILE.lcm]\n"
-                    "  A, B: a champion blob file or builtin:NAME (idle, spinner, forager, hunter, forager-hunter)\n");
+                    "[--lcm-log FILE.lcm] [--json]\n"
+                    "  A, B: a champion blob or genome file, or builtin:NAME (idle, spinner, forager, hunter, "
+                    "forager-hunter)\n");
+}
+
+/* The outcome as a JSON word (docs/tools.md, "play --json"). */
+static const char *duel_outcome_key(int outcome)
+{
+    switch (outcome) {
+    case DUEL_WEST_WINS: return "west_wins";
+    case DUEL_EAST_WINS: return "east_wins";
+    case DUEL_DRAW: return "draw";
+    default: return "timeout";
+    }
+}
+
+/* One game as one JSON object on stdout. */
+static void duel_play_json_game(const char *west, const char *east, int food, const duel_result *r)
+{
+    printf("{\"games\":1,\"food\":");
+    if (food < 0)
+        printf("\"training\"");
+    else
+        printf("%d", food);
+    printf(",\"west\":");
+    duel_json_str(stdout, west);
+    printf(",\"east\":");
+    duel_json_str(stdout, east);
+    printf(",\"outcome\":\"%s\",\"steps\":%u,\"energy\":[%.6f,%.6f],\"eaten\":[%u,%u]}\n",
+           duel_outcome_key(r->outcome), (unsigned)r->steps, r->energy[0] / 65536.0, r->energy[1] / 65536.0,
+           (unsigned)r->eaten[0], (unsigned)r->eaten[1]);
+}
+
+/* A 288-game comparison as one JSON object on stdout. */
+static void duel_play_json_tally(const char *a, const char *b, const duel_tally *t)
+{
+    printf("{\"games\":%u,\"a\":", 2u * DUEL_CONFIGS);
+    duel_json_str(stdout, a);
+    printf(",\"b\":");
+    duel_json_str(stdout, b);
+    printf(",\"a_wins\":%u,\"b_wins\":%u,\"draws\":%u,\"timeouts\":%u,\"superior\":%s}\n", t->wins_a,
+           t->wins_b, t->draws, t->timeouts,
+           t->wins_a > t->wins_b ? "\"a\"" : (t->wins_b > t->wins_a ? "\"b\"" : "null"));
 }
 
 int duel_cmd_play(int argc, char **argv)
 {
     duel_cli_ctrl a, b;
     const char *trace_path = NULL, *lcm_path = NULL;
-    int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err;
+    int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err, json = 0;
 
     if (argc < 2) {
         duel_play_usage();
@@ -28,6 +70,10 @@ int duel_cmd_play(int argc, char **argv)
     }
     for (i = 2; i < argc; i++) {
         const char *opt = argv[i];
+        if (strcmp(opt, "--json") == 0) {
+            json = 1;
+            continue;
+        }
         if (i + 1 >= argc) {
             static const char *const takes[] = {"--games", "--food", "--side", "--trace", "--lcm-log", NULL};
             return duel_cli_missing_value("play", opt, takes);
@@ -86,6 +132,8 @@ int duel_cmd_play(int argc, char **argv)
         if (err) {
             fprintf(stderr, "duel_evolve: play: comparison failed (%d)\n", err);
             rc = 1;
+        } else if (json) {
+            duel_play_json_tally(a.name, b.name, &t);
         } else {
             printf("288 games (144 food configurations x 2 sides): A %s wins %u, B %s wins %u, draws %u, timeouts %u\n",
                    a.name, t.wins_a, b.name, t.wins_b, t.draws, t.timeouts);
@@ -142,6 +190,8 @@ int duel_cmd_play(int argc, char **argv)
         if (err) {
             fprintf(stderr, "duel_evolve: play: game failed (%d)\n", err);
             rc = 1;
+        } else if (json) {
+            duel_play_json_game(a_west ? a.name : b.name, a_west ? b.name : a.name, food, &r);
         } else {
             const char *wname = a_west ? a.name : b.name, *ename = a_west ? b.name : a.name;
             if (food < 0)
