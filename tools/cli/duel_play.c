@@ -1,4 +1,4 @@
-/* duel_play.c - `duel_evolve play A B`: one game, or the 288-game comparison, between two controllers. */
+/* duel_play.c - `duel_evolve play A B`: one game, or the 288-game comparison, between two controllers, as text or JSON. */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
