@@ -1,4 +1,4 @@
-/* duel.h - the robot duel world of spec v1 (../shared/spec/duel-world.md) in fixed point: world, sensors, games, comparisons. */
+/* duel.h - the robot duel world of spec v1 (docs/duel-world.md) in fixed point: world, sensors, games, comparisons. */
 #ifndef DUEL_H
 #define DUEL_H
 

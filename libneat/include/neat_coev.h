@@ -11,7 +11,7 @@ extern "C" {
 
 /*
  * The protocol of Stanley & Miikkulainen (2004), section 5, as fixed by
- * spec duel-world.md ("Coevolution protocol"); the game itself is the
+ * docs/duel-world.md ("Coevolution, per generation"); the game itself is the
  * caller's, played through one batch callback:
  *
  *     neat_coev *c;
