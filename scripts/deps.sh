@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages the build, the tests and the benchmarks need, if any is missing.
+# Installs the Debian 12 packages the build, the tests and the benchmarks need, if any is missing (without their
+# Recommends: about 3 GB on a bare system), and the Python lcm package into a directory of its own.
 set -euo pipefail
-PKGS="build-essential cmake ninja-build pkg-config libcmocka-dev procps clang llvm libclang-rt-14-dev \
-      gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-system-arm \
-      gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc valgrind graphviz \
-      libosmesa6-dev libpng-dev ffmpeg liblcm-dev liblcm-bin liblcm-java libglib2.0-dev python3-matplotlib \
-      openmpi-bin libopenmpi-dev"
+# What each group is for (a package the project does not use is not installed):
+PKGS="build-essential cmake ninja-build pkg-config libcmocka-dev procps"           # the build and the unit tests
+PKGS="$PKGS clang llvm libclang-rt-14-dev"                                          # the fuzzers (libFuzzer)
+PKGS="$PKGS gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-system-arm" # Cortex-M firmware
+PKGS="$PKGS gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc" # RISC-V firmware
+PKGS="$PKGS valgrind"                                                               # instruction counts (bench/)
+PKGS="$PKGS graphviz fonts-dejavu-core libosmesa6-dev libpng-dev ffmpeg"            # network pictures, replays, videos
+PKGS="$PKGS liblcm-dev liblcm-bin liblcm-java libglib2.0-dev"                       # LCM nodes and logs
+PKGS="$PKGS python3-matplotlib python3-pip"                                         # the experiment's figures; pip
+PKGS="$PKGS openmpi-bin libopenmpi-dev"                                             # runs across processes (MPI)
 # LCM's TCP hub (lcm.lcm.TCPService, the tests over tcpq://) runs on any Java runtime
 command -v java > /dev/null 2>&1 || PKGS="$PKGS default-jre-headless"
 SUDO=""
@@ -16,16 +22,21 @@ for p in $PKGS; do
 done
 if [ -n "$missing" ]; then
   echo "installing:$missing"
+  echo "(apt-get update, then one line per package set up; a bare Debian 12 takes a few minutes)"
   $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing >/dev/null
+  # the Recommends would add the Arm C++ library, EFI firmware and more that nothing here uses
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends $missing |
+    awk '/^Setting up / { print "  set up " $3; fflush() }'
 fi
-# The Python lcm package from PyPI, for the test that decodes a log in Python (tests/lcm/decode_log.py)
-if ! python3 -c 'import lcm' 2> /dev/null; then
-  if ! python3 -m pip --version > /dev/null 2>&1; then
-    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq python3-pip > /dev/null
-  fi
-  echo "installing: lcm==1.5.3 (PyPI)"
-  user=""
-  if [ "$(id -u)" -ne 0 ]; then user="--user"; fi
-  PIP_BREAK_SYSTEM_PACKAGES=1 python3 -m pip install -q $user lcm==1.5.3
+# The Python lcm package from PyPI, for the test that decodes a log in Python (tests/lcm/decode_log.py): into
+# a directory of its own (CMake's NEAT_PY_LCM, the test's PYTHONPATH), so that its lcm-gen, lcm-logplayer and
+# lcm-spy scripts are on nobody's PATH and never shadow Debian's.
+py=/usr/bin/python3
+[ -x "$py" ] || py=python3
+pylcm=${NEAT_PY_LCM:-$HOME/.local/lib/neat-duel/python3}
+if ! PYTHONPATH="$pylcm" "$py" -c 'import lcm' 2> /dev/null; then
+  echo "installing: lcm==1.5.3 (PyPI) into $pylcm"
+  mkdir -p "$pylcm"
+  PIP_BREAK_SYSTEM_PACKAGES=1 "$py" -m pip install -q --no-deps --root-user-action=ignore --disable-pip-version-check \
+    --target "$pylcm" lcm==1.5.3
 fi

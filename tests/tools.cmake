@@ -184,13 +184,16 @@ if(NOT LCM_JAVA_CLASSPATH)
   set(LCM_JAVA_CLASSPATH /usr/share/java/lcm.jar)
 endif()
 find_program(LCM_LOGPLAYER lcm-logplayer HINTS ${LCM_PREFIX}/bin NO_DEFAULT_PATH) # not PyPI lcm's, if on PATH
-find_program(NEAT_PYTHON3 python3)
+# Debian's python3 first (a python3 of pyenv or a virtual environment may lack matplotlib), and the PyPI lcm
+# package where scripts/deps.sh puts it
+set(NEAT_PYTHON3 ${DUEL_PYTHON})
+set(NEAT_PY_LCM "$ENV{HOME}/.local/lib/neat-duel/python3" CACHE PATH "the PyPI lcm package's directory (scripts/deps.sh)")
 foreach(check log bad-input processes kill logplayer champion-games python hostile-logs hostile-bus)
   add_test(NAME lcm/duel_lcm_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/lcm/lcm_cli.sh ${check} $<TARGET_FILE:duel_evolve> $<TARGET_FILE:duel_bench>
                    ${NEAT_JAVA} ${LCM_JAVA_CLASSPATH} ${LCM_LOGPLAYER} ${NEAT_PYTHON3} ${DUEL_LCM_GEN}/python
                    ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini $<TARGET_FILE:lcm_hostile>)
-  set_tests_properties(lcm/duel_lcm_${check} PROPERTIES SKIP_RETURN_CODE 77)
+  set_tests_properties(lcm/duel_lcm_${check} PROPERTIES SKIP_RETURN_CODE 77 ENVIRONMENT "NEAT_PY_LCM=${NEAT_PY_LCM}")
 endforeach()
 
 # duel_evolve under mpirun (docs/cluster.md), when duel_evolve is built with MPI and mpirun is there: 1, 2, 3 and 5

@@ -247,13 +247,16 @@ champion-games)
   ;;
 python)
   # a recorded log decoded with the PyPI lcm package and the lcm-gen -p types (the README's example)
+  # (the package where scripts/deps.sh puts it, NEAT_PY_LCM, off everyone's PATH)
   [ -x "$python" ] || skip "no python3"
-  "$python" -c 'import lcm' 2>/dev/null || skip "no Python lcm package (scripts/deps.sh: python3 -m pip install lcm==1.5.3)"
+  pylcm=${NEAT_PY_LCM:-}
+  PYTHONPATH="$pylcm" "$python" -c 'import lcm' 2>/dev/null ||
+    skip "no Python lcm package in '$pylcm' (scripts/deps.sh installs it there)"
   for game in "builtin:forager-hunter builtin:idle" "builtin:forager builtin:forager --food 12" \
               "builtin:spinner builtin:hunter --food 100 --side east"; do
     # shellcheck disable=SC2086
     "$duel" play $game --lcm-log "$tmp/g.lcm" > "$tmp/play.txt"
-    PYTHONPATH="$pytypes" "$python" "$(dirname "$0")/decode_log.py" "$tmp/g.lcm" "$tmp/play.txt" ||
+    PYTHONPATH="$pytypes${pylcm:+:$pylcm}" "$python" "$(dirname "$0")/decode_log.py" "$tmp/g.lcm" "$tmp/play.txt" ||
       fail "$game: decode_log.py"
   done
   ;;
