@@ -157,7 +157,7 @@ endforeach()
 
 # duel_evolve export: the array compiled by the host compiler gives back the blob; bad input
 # (the firmware example's own tests are in examples/firmware/test)
-foreach(check roundtrip bad-input)
+foreach(check roundtrip header bad-input)
   add_test(NAME tools/duel_export_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/duel_export.sh $<TARGET_FILE:duel_evolve>
                    $<TARGET_FILE:duel_bench> ${check})

@@ -47,6 +47,45 @@ C
     cmp "$tmp/$net.c" "$tmp/$net-o.c" || fail "$net: -o differs from stdout"
   done
   ;;
+header)
+  # --header: the constants a firmware sizes its buffers with, the runtime loading the champion into exactly
+  # CHAMP_MEM_SIZE bytes, the header checked against the array by the compiler (C and C++)
+  root=$(cd "$(dirname "$0")/../.." && pwd)
+  cat > "$tmp/fw.c" <<'C'
+#include <stdio.h>
+#include "champ.h"
+#include "nrt.h"
+static uint8_t mem[CHAMP_MEM_SIZE];
+int main(void)
+{
+    nrt_net net;
+    nrt_q15 in[CHAMP_INPUTS] = {NRT_ONE}, out[CHAMP_OUTPUTS];
+    size_t need = 0;
+    if (nrt_mem_required(champ, champ_len, &need) != 0 || need != CHAMP_MEM_SIZE || champ_len != CHAMP_BLOB_SIZE)
+        return 1;
+    if (nrt_load(&net, champ, champ_len, mem, sizeof mem) != 0 || net.n_inputs != CHAMP_INPUTS)
+        return 2;
+    nrt_step(&net, in, out);
+    printf("%u %u\n", (unsigned)CHAMP_BLOB_SIZE, (unsigned)CHAMP_MEM_SIZE);
+    return 0;
+}
+C
+  for net in net39a net202a; do
+    (cd "$tmp" && "$duel" export "$net.blob" --c-array champ -o champ.c --header champ.h)
+    grep -q '^#include "champ.h"$' "$tmp/champ.c" || fail "$net: the .c does not include its header"
+    cc -std=c99 -Wall -Wextra -Wpedantic -Wmissing-prototypes -Wstrict-prototypes -Wshadow -Werror \
+      -I"$root/runtime/include" -I"$tmp" -c "$tmp/champ.c" -o "$tmp/champ.o" || fail "$net: champ.c"
+    cc -std=c99 -Wall -Wextra -Werror -I"$root/runtime/include" -I"$tmp" "$tmp/fw.c" "$tmp/champ.o" \
+      "$root"/runtime/src/nrt_load.c "$root"/runtime/src/nrt_step.c "$root"/runtime/src/nrt_sigmoid.c \
+      -I"$root/runtime/src" -o "$tmp/fw" || fail "$net: a program using the header does not build"
+    ram=$("$duel" inspect "$tmp/$net.blob" | sed -n 's/^ram: \([0-9]*\) bytes.*/\1/p')
+    [ "$("$tmp/fw")" = "$(wc -c < "$tmp/$net.blob") $ram" ] || fail "$net: the constants: $("$tmp/fw")"
+    if command -v c++ > /dev/null; then
+      printf '#include "champ.h"\nint main() { return champ_len == CHAMP_BLOB_SIZE ? 0 : 1; }\n' > "$tmp/x.cpp"
+      c++ -Wall -Werror -I"$tmp" "$tmp/x.cpp" "$tmp/champ.o" -o "$tmp/x" && "$tmp/x" || fail "$net: C++ use"
+    fi
+  done
+  ;;
 bad-input)
   # a blob the runtime refuses: one byte of a connection changed (CRC), the header cut short
   cp "$tmp/net39a.blob" "$tmp/crc.blob"

@@ -34,7 +34,7 @@ static void duel_usage(FILE *f)
                "       duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [--size 600] "
                "[--every N] [--sensors] [--video FILE.mp4] [--fps 30]\n"
                "       duel_evolve render-net BLOB --out FILE.png\n"
-               "       duel_evolve export BLOB --c-array NAME [-o FILE.c]\n"
+               "       duel_evolve export BLOB --c-array NAME [-o FILE.c] [--header FILE.h]\n"
                "A and B: champion blobs or genome files (champions/gen-N.blob, .genome) or builtin:NAME; wherever a BLOB "
                "is named, a genome file may be. Robot duels of spec v%d (docs/duelsim.md). Under mpirun, run, resume and experiment use every rank "
                "(docs/cluster.md)%s.\n", DUEL_SPEC_VERSION, duel_mpi_built() ? "" : "; this build has no MPI");

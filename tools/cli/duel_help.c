@@ -131,10 +131,12 @@ static const duel_help_entry duel_help_entries[] = {
      "The network drawn by Graphviz as a PNG (docs/render.md).\n"
      "  --out FILE.png           the image to write (atomically)\n"},
     {"export",
-     "usage: duel_evolve export BLOB|GENOME --c-array NAME [-o FILE.c]\n"
+     "usage: duel_evolve export BLOB|GENOME --c-array NAME [-o FILE.c] [--header FILE.h]\n"
      "The champion as a C array for a firmware (docs/firmware.md).\n"
      "  --c-array NAME           the array's name (a C identifier)\n"
-     "  -o FILE.c                write to FILE.c (atomically) instead of stdout\n"},
+     "  -o FILE.c                write to FILE.c (atomically) instead of stdout\n"
+     "  --header FILE.h          also a header: the array, NAME_BLOB_SIZE, NAME_MEM_SIZE (the bytes nrt_load\n"
+     "                           needs), NAME_INPUTS, NAME_OUTPUTS; the .c then includes it\n"},
 };
 
 int duel_help_wanted(int argc, char **argv)
