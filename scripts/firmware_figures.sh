@@ -39,6 +39,10 @@ arm-none-eabi-size "$work/m0plus/fw/duels.elf" "$work/m0plus/fw/figures.elf" | s
 measure() { # measure MACHINE BUILD_DIR
   "$fw" run "$1" "$2/fw/figures.elf" "$work/$1.txt" --icount
   cat "$work/$1.txt"
+  # the games image of that build (text + data in flash, bss in RAM)
+  local size=arm-none-eabi-size
+  [ "$1" != sifive_e ] || size=riscv64-unknown-elf-size
+  "$size" "$2/fw/duels.elf" | awk 'NR == 2 { print "games image: " $1 + $2 " bytes of flash, " $3 " of bss" }'
   echo "  (QEMU: $("$fw" command "$1" figures.elf OUT --icount))"
 }
 

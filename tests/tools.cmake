@@ -225,3 +225,11 @@ set_tests_properties(tools/neat_bench_version PROPERTIES PASS_REGULAR_EXPRESSION
 # neat_bench TASK --help: the options described (exit 0), not "--help needs a value"
 add_test(NAME tools/neat_bench_help COMMAND neat_bench xor --help)
 set_tests_properties(tools/neat_bench_help PROPERTIES PASS_REGULAR_EXPRESSION "  --dump-config +print the parameters")
+
+# the deterministic figures the docs quote (code sizes, instructions per step, stack, evaluation counts), each
+# marked <!--fig:NAME--> in README.md and docs/*.md, measured again: a stale one fails the test
+# (scripts/doc_figures.py BUILD --write puts the measured ones in place)
+if(NOT NEAT_SANITIZE AND NOT NEAT_FUZZ)
+  add_test(NAME docs/figures COMMAND ${DUEL_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/doc_figures.py ${PROJECT_BINARY_DIR})
+  set_tests_properties(docs/figures PROPERTIES SKIP_RETURN_CODE 77 RUN_SERIAL TRUE)
+endif()
