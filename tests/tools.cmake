@@ -233,3 +233,10 @@ if(NOT NEAT_SANITIZE AND NOT NEAT_FUZZ)
   add_test(NAME docs/figures COMMAND ${DUEL_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/doc_figures.py ${PROJECT_BINARY_DIR})
   set_tests_properties(docs/figures PROPERTIES SKIP_RETURN_CODE 77 RUN_SERIAL TRUE)
 endif()
+
+# every command block of README.md, run as written in order (long jobs smaller: tests/docs/readme_commands.sh)
+if(NOT NEAT_SANITIZE AND NOT NEAT_FUZZ)
+  add_test(NAME docs/readme_commands
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/readme_commands.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+  set_tests_properties(docs/readme_commands PROPERTIES RUN_SERIAL TRUE)
+endif()
