@@ -8,10 +8,10 @@
  *     neat_phenotype ph;
  *     neat_phenotype_init(&ph, NULL);               // NULL: libc's realloc/free
  *     neat_phenotype_load(&ph, genome, &params);    // encode + validate + lay out
+ *     nrt_reset(&ph.net);                           // before every trial
  *     nrt_q15 *in = nrt_inputs(&ph.net);            // n_inputs + 1 slots
  *     in[0] = NRT_ONE;                              // the bias, always NRT_ONE
  *     in[1] = neat_q15(x1); in[2] = neat_q15(x2);   // the task's inputs
- *     nrt_reset(&ph.net);                           // before every trial
  *     nrt_settle(&ph.net, in, out, 20);             // feed-forward tasks
  *     // or nrt_step(&ph.net, in, out) once per time step (control tasks)
  *     y = neat_from_q15(out[0]);
@@ -36,7 +36,8 @@
  *   output. A feed-forward task calls nrt_settle (steps until nothing
  *   changes); a recurrent or control task calls nrt_step once per time step.
  *   nrt_reset zeroes all activations: call it between trials, or the last
- *   trial's state leaks into the next.
+ *   trial's state leaks into the next. It zeroes the input slots too, so
+ *   write the inputs through nrt_inputs after it, not before.
  * - ph.blob / ph.blob_len hold the network's champion blob (docs/formats.md)
  *   after a load: write them to a file and the runtime loads exactly this
  *   network on a microcontroller.
