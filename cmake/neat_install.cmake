@@ -59,5 +59,10 @@ endforeach()
 
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 if(NEAT_BUILD_TOOLS)
+  if(BUILD_SHARED_LIBS AND NOT IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+    # the installed tools find the installed shared libraries beside them, wherever the prefix is
+    file(RELATIVE_PATH _bin_to_lib /prefix/${CMAKE_INSTALL_BINDIR} /prefix/${CMAKE_INSTALL_LIBDIR})
+    set_target_properties(duel_evolve neat_bench PROPERTIES INSTALL_RPATH "$ORIGIN/${_bin_to_lib}")
+  endif()
   install(TARGETS duel_evolve neat_bench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
