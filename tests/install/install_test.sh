@@ -72,8 +72,10 @@ find-package-static | find-package-shared)
   run_parity "$work/$kind/parity/parity"
   "$work/$kind/coev_game/coev_game" | tail -1
   if [[ $kind == shared ]]; then
-    ldd "$work/$kind/parity/parity" | grep -q "libneat.so.${version%.*} => $work/$kind/prefix" ||
-      fail "parity does not run on the installed libneat.so: $(ldd "$work/$kind/parity/parity")"
+    # (ldd's output whole first: grep -q leaving early would break ldd's pipe, a failure under pipefail)
+    libs=$(ldd "$work/$kind/parity/parity")
+    [[ $libs == *"libneat.so.${version%.*} => $work/$kind/prefix/"* ]] ||
+      fail "parity does not run on the installed libneat.so: $libs"
   fi
   ;;
 pkg-config-static | pkg-config-shared)
@@ -100,7 +102,7 @@ symbols)
   [[ -z $extra ]] || fail "exported but not declared in a public header: $(echo $extra)"
   [[ -z $missing ]] || fail "declared in a public header but not exported: $(echo $missing)"
   # a function of libneat/src/neat_internal.h, for the record that the check sees what it should
-  if nm -D --defined-only "$p"/lib*/libneat.so | grep -qw neat_mutate; then fail "neat_mutate exported"; fi
+  [[ $'\n'$exported$'\n' != *$'\n'neat_mutate$'\n'* ]] || fail "neat_mutate exported"
   echo "exported: exactly the $(echo "$exported" | wc -l) functions the public headers declare"
   ;;
 subproject)
