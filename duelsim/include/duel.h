@@ -96,8 +96,8 @@ DUEL_API int duel_world_init(duel_world *w, int food_config);
 DUEL_API void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS]);
 /* One step with both robots' outputs (l, r, f): move, pay, eat, collide,
  * time out. ev may be NULL. Returns the outcome (DUEL_RUNNING while on). */
-DUEL_API int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const nrt_q15 out_east[DUEL_N_OUTPUTS],
-                    duel_event *ev);
+DUEL_API int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS],
+                             const nrt_q15 out_east[DUEL_N_OUTPUTS], duel_event *ev);
 
 /* ---- fixed-point geometry (duel_trig.c) ---- */
 /* cos and sin of a binary angle, Q2.30; exactly symmetric (cos(-a) = cos(a),
@@ -144,8 +144,8 @@ typedef void (*duel_trace_fn)(void *ud, const duel_world *w, const nrt_q15 in[2]
 /* One game. Networks are reset first; the two controllers may not share one
  * nrt_net (DUEL_E_ARG: load the blob twice). trace may be NULL; it is called
  * once per step with the state before the move and that step's events. */
-DUEL_API int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
-              void *ud);
+DUEL_API int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res,
+                       duel_trace_fn trace, void *ud);
 
 /* The 288-game comparison: every configuration, a starting west then east. */
 typedef struct duel_tally {

@@ -177,7 +177,7 @@ NEAT_API void neat_genome_free(neat_genome *g, const neat_alloc *a);
 NEAT_API int neat_genome_copy(neat_genome *dst, const neat_genome *src, const neat_alloc *a);
 NEAT_API int neat_genome_add_node(neat_genome *g, uint32_t id, int type, const neat_alloc *a);
 NEAT_API int neat_genome_add_conn(neat_genome *g, uint32_t in, uint32_t out, double weight, uint32_t innov, int enabled,
-                         const neat_alloc *a);
+                                  const neat_alloc *a);
 /* bias and every input connected to every output (the paper's minimal start) */
 NEAT_API int neat_genome_minimal(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, const neat_alloc *a);
 /* H hidden nodes: bias+inputs -> hidden, hidden -> hidden (all pairs, self
@@ -188,7 +188,7 @@ NEAT_API int neat_genome_minimal(neat_genome *g, uint32_t n_inputs, uint32_t n_o
  * order; weights 0. */
 enum neat_direct { NEAT_DIRECT_INPUTS = 0, NEAT_DIRECT_BIAS = 1 };
 NEAT_API int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint32_t n_hidden,
-                                 int direct, const neat_alloc *a);
+                                          int direct, const neat_alloc *a);
 /* The network of a champion blob (validated as nrt_load does) as a genome:
  * nodes and connections kept, node ids as the blob's node indices (bias 0,
  * inputs, outputs, hidden), innovations 0, 1, ... in the blob's connection
@@ -205,7 +205,7 @@ NEAT_API size_t neat_blob_size(const neat_genome *g);
 /* Writes the blob into buf (cap bytes). NEAT_E_TOOBIG if the network has more
  * than 256 nodes or 65535 enabled connections; NEAT_E_ARG if cap is short. */
 NEAT_API int neat_blob_write(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t *buf, size_t cap,
-                    size_t *len);
+                             size_t *len);
 
 /* ---- population ---------------------------------------------------------- */
 typedef struct neat_pop neat_pop;
@@ -219,7 +219,7 @@ typedef struct neat_start {
 } neat_start;
 
 NEAT_API int neat_pop_create(neat_pop **out, const neat_params *p, const neat_start *start, uint64_t seed,
-                    const neat_alloc *alloc);
+                             const neat_alloc *alloc);
 NEAT_API void neat_pop_free(neat_pop *pop);
 
 NEAT_API uint32_t neat_pop_size(const neat_pop *pop);

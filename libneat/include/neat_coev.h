@@ -71,8 +71,8 @@ typedef struct neat_coev neat_coev;
  * is a count of wins against opponents that change every generation,
  * bounded by the games played and reached early, so the best never
  * "improves" and the rule would fire on a fixed schedule. */
-NEAT_API int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp, const neat_start *start,
-                     uint64_t seed, const neat_alloc *alloc);
+NEAT_API int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp,
+                              const neat_start *start, uint64_t seed, const neat_alloc *alloc);
 NEAT_API void neat_coev_free(neat_coev *c);
 
 /* What one population did in a generation. Sizes are hidden nodes and
@@ -142,7 +142,8 @@ NEAT_API int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat
 NEAT_API int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);
 NEAT_API void neat_coev_buf_free(const neat_coev *c, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
-NEAT_API int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+NEAT_API int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_alloc *alloc,
+                            size_t *err_offset);
 
 #ifdef __cplusplus
 }
