@@ -184,7 +184,7 @@ static int bench_main(int argc, char **argv)
     int i, have_seed = 0, have_runs = 0, have_threads = 0, quiet = 0, dump = 0, verbose = 0;
 
     if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
-        printf("neat_bench %s (libneat %d.%d)\n", NEAT_DUEL_VERSION, NEAT_VERSION_MAJOR, NEAT_VERSION_MINOR);
+        printf("neat_bench %s (libneat %d.%d)\n", NEAT_DUEL_VERSION_STRING, NEAT_VERSION_MAJOR, NEAT_VERSION_MINOR);
         return 0;
     }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {

@@ -24,6 +24,11 @@ extern "C" {
 
 #define DUEL_SPEC_VERSION 1
 
+/* the export attribute of the shared libraries (empty in static and firmware builds) */
+#ifndef DUEL_API
+#define DUEL_API NEAT_DUEL_EXPORT
+#endif
+
 /* ---- fixed point ---- */
 #define DUEL_ONE 65536                 /* Q16.16 */
 #define DUEL_FIX(v) ((int32_t)((v) * DUEL_ONE))
@@ -86,29 +91,29 @@ typedef struct duel_event {
 
 /* ---- world ---- */
 /* Start of a game on food configuration DUEL_TRAINING or 0..143. */
-int duel_world_init(duel_world *w, int food_config);
+DUEL_API int duel_world_init(duel_world *w, int food_config);
 /* The 13 inputs of robot `side` from the current state (spec order). */
-void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS]);
+DUEL_API void duel_sense(const duel_world *w, int side, nrt_q15 in[DUEL_N_INPUTS]);
 /* One step with both robots' outputs (l, r, f): move, pay, eat, collide,
  * time out. ev may be NULL. Returns the outcome (DUEL_RUNNING while on). */
-int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS], const nrt_q15 out_east[DUEL_N_OUTPUTS],
-                    duel_event *ev);
+DUEL_API int duel_world_step(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS],
+                             const nrt_q15 out_east[DUEL_N_OUTPUTS], duel_event *ev);
 
 /* ---- fixed-point geometry (duel_trig.c) ---- */
 /* cos and sin of a binary angle, Q2.30; exactly symmetric (cos(-a) = cos(a),
  * cos(pi - a) = -cos(a), ...). Error against double: docs/duelsim.md. */
-void duel_cossin(duel_angle a, int32_t *c, int32_t *s);
+DUEL_API void duel_cossin(duel_angle a, int32_t *c, int32_t *s);
 /* floor(sqrt(x)) */
-uint32_t duel_isqrt64(uint64_t x);
+DUEL_API uint32_t duel_isqrt64(uint64_t x);
 
 /* ---- the vector path ---- */
 /* 1 when duel_play senses both robots with AVX2: an x86-64 build on a
  * processor that has it (docs/duelsim.md, "Speed"). Every result is the same
  * with and without it. */
-int duel_simd_active(void);
+DUEL_API int duel_simd_active(void);
 /* 0 turns the AVX2 path off (1, the default, allows it), for comparisons and
  * tests. Not synchronised: call it before any game starts. */
-void duel_simd_allow(int allow);
+DUEL_API void duel_simd_allow(int allow);
 
 /* ---- controllers ---- */
 enum duel_builtin { DUEL_IDLE = 0, DUEL_SPINNER, DUEL_FORAGER, DUEL_HUNTER, DUEL_FORAGER_HUNTER, DUEL_N_BUILTINS };
@@ -119,10 +124,10 @@ typedef struct duel_controller {
 } duel_controller;
 
 /* "idle", "spinner", ... -> enum duel_builtin, or DUEL_E_ARG. */
-int duel_builtin_parse(const char *name);
-const char *duel_builtin_name(int builtin);
+DUEL_API int duel_builtin_parse(const char *name);
+DUEL_API const char *duel_builtin_name(int builtin);
 /* The builtin's outputs for these inputs (pure functions of the inputs). */
-void duel_builtin_act(int builtin, const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 out[DUEL_N_OUTPUTS]);
+DUEL_API void duel_builtin_act(int builtin, const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 out[DUEL_N_OUTPUTS]);
 
 /* ---- games ---- */
 typedef struct duel_result {
@@ -139,17 +144,17 @@ typedef void (*duel_trace_fn)(void *ud, const duel_world *w, const nrt_q15 in[2]
 /* One game. Networks are reset first; the two controllers may not share one
  * nrt_net (DUEL_E_ARG: load the blob twice). trace may be NULL; it is called
  * once per step with the state before the move and that step's events. */
-int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
-              void *ud);
+DUEL_API int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res,
+                       duel_trace_fn trace, void *ud);
 
 /* The 288-game comparison: every configuration, a starting west then east. */
 typedef struct duel_tally {
     uint32_t wins_a, wins_b, draws, timeouts;
 } duel_tally;
-int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally);
+DUEL_API int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally);
 
 /* How a game ended, for people: "west wins (collision, more energy)", ... */
-const char *duel_outcome_text(int outcome);
+DUEL_API const char *duel_outcome_text(int outcome);
 
 #ifdef __cplusplus
 }

@@ -22,16 +22,24 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "neat_duel_version.h"
+
 /* C++ callers link against the C symbols */
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 /* ---- versions ---------------------------------------------------------- */
-#define NEAT_VERSION_MAJOR 0
-#define NEAT_VERSION_MINOR 1
+/* the library's version: the project's (neat_duel_version.h) */
+#define NEAT_VERSION_MAJOR NEAT_DUEL_VERSION_MAJOR
+#define NEAT_VERSION_MINOR NEAT_DUEL_VERSION_MINOR
 #define NEAT_CHECKPOINT_VERSION 2 /* checkpoint format, apart from the code */
 #define NEAT_GENOME_FILE_VERSION 1 /* genome file format (neat_genome_save) */
+
+/* the export attribute of the shared libraries (empty in static and firmware builds) */
+#ifndef NEAT_API
+#define NEAT_API NEAT_DUEL_EXPORT
+#endif
 
 /* ---- errors ------------------------------------------------------------- */
 enum neat_error {
@@ -63,16 +71,16 @@ typedef struct neat_rng {
     uint64_t s[4];
 } neat_rng;
 
-void neat_rng_seed(neat_rng *rng, uint64_t seed);
-uint64_t neat_rng_next(neat_rng *rng);
+NEAT_API void neat_rng_seed(neat_rng *rng, uint64_t seed);
+NEAT_API uint64_t neat_rng_next(neat_rng *rng);
 /* uniform in [0, 1), 53 bits */
-double neat_rng_uniform(neat_rng *rng);
+NEAT_API double neat_rng_uniform(neat_rng *rng);
 /* uniform integer in [0, n), n > 0, without modulo bias */
-uint32_t neat_rng_below(neat_rng *rng, uint32_t n);
+NEAT_API uint32_t neat_rng_below(neat_rng *rng, uint32_t n);
 /* A seed derived from a base seed and a tuple of keys (e.g. generation,
  * host, opponent, side): the same tuple gives the same seed on every
  * machine, independently of evaluation order. */
-uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys);
+NEAT_API uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys);
 
 /* ---- parameters ---------------------------------------------------------
  * neat_params_default() gives the paper's Appendix A values; every other
@@ -144,9 +152,9 @@ typedef struct neat_params {
     uint32_t max_nodes;         /* never more nodes than the blob format allows (256) */
 } neat_params;
 
-neat_params neat_params_default(void);
+NEAT_API neat_params neat_params_default(void);
 /* NEAT_OK, or NEAT_E_PARAM with *field set to the offending field's name. */
-int neat_params_check(const neat_params *p, const char **field);
+NEAT_API int neat_params_check(const neat_params *p, const char **field);
 
 /* ---- genomes ------------------------------------------------------------ */
 enum neat_node_type { NEAT_NODE_BIAS = 0, NEAT_NODE_INPUT = 1, NEAT_NODE_OUTPUT = 2, NEAT_NODE_HIDDEN = 3 };
@@ -177,14 +185,14 @@ typedef struct neat_genome {
 /* A start topology handed to neat_pop_create (weights are re-drawn for every
  * individual unless keep_weights): either built with the constructors below,
  * or by hand with neat_genome_add_node / neat_genome_add_conn. */
-void neat_genome_init(neat_genome *g);
-void neat_genome_free(neat_genome *g, const neat_alloc *a);
-int neat_genome_copy(neat_genome *dst, const neat_genome *src, const neat_alloc *a);
-int neat_genome_add_node(neat_genome *g, uint32_t id, int type, const neat_alloc *a);
-int neat_genome_add_conn(neat_genome *g, uint32_t in, uint32_t out, double weight, uint32_t innov, int enabled,
-                         const neat_alloc *a);
+NEAT_API void neat_genome_init(neat_genome *g);
+NEAT_API void neat_genome_free(neat_genome *g, const neat_alloc *a);
+NEAT_API int neat_genome_copy(neat_genome *dst, const neat_genome *src, const neat_alloc *a);
+NEAT_API int neat_genome_add_node(neat_genome *g, uint32_t id, int type, const neat_alloc *a);
+NEAT_API int neat_genome_add_conn(neat_genome *g, uint32_t in, uint32_t out, double weight, uint32_t innov, int enabled,
+                                  const neat_alloc *a);
 /* bias and every input connected to every output (the paper's minimal start) */
-int neat_genome_minimal(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, const neat_alloc *a);
+NEAT_API int neat_genome_minimal(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, const neat_alloc *a);
 /* H hidden nodes: bias+inputs -> hidden, hidden -> hidden (all pairs, self
  * included), hidden -> outputs, plus direct connections to the outputs:
  * NEAT_DIRECT_INPUTS from the bias and every input ((I+1)O: H^2 + 16H + 39
@@ -192,25 +200,25 @@ int neat_genome_minimal(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, c
  * from the bias only (O: H^2 + 16H + 3). Innovations 0, 1, ... in that
  * order; weights 0. */
 enum neat_direct { NEAT_DIRECT_INPUTS = 0, NEAT_DIRECT_BIAS = 1 };
-int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint32_t n_hidden,
-                                 int direct, const neat_alloc *a);
+NEAT_API int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint32_t n_hidden,
+                                          int direct, const neat_alloc *a);
 /* The network of a champion blob (validated as nrt_load does) as a genome:
  * nodes and connections kept, node ids as the blob's node indices (bias 0,
  * inputs, outputs, hidden), innovations 0, 1, ... in the blob's connection
  * order, weights the blob's. NEAT_E_FORMAT if the blob is not valid. */
-int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a);
-uint32_t neat_genome_hidden_count(const neat_genome *g);
-uint32_t neat_genome_enabled_count(const neat_genome *g);
+NEAT_API int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a);
+NEAT_API uint32_t neat_genome_hidden_count(const neat_genome *g);
+NEAT_API uint32_t neat_genome_enabled_count(const neat_genome *g);
 /* Compatibility distance delta under p (c1, c2, c3, normalize_by_size). */
-double neat_genome_distance(const neat_genome *a, const neat_genome *b, const neat_params *p);
+NEAT_API double neat_genome_distance(const neat_genome *a, const neat_genome *b, const neat_params *p);
 
 /* ---- phenotype: genome -> champion blob (docs/formats.md) ---------------- */
 /* Bytes the blob of g takes: 32 + 4 per enabled connection. */
-size_t neat_blob_size(const neat_genome *g);
+NEAT_API size_t neat_blob_size(const neat_genome *g);
 /* Writes the blob into buf (cap bytes). NEAT_E_TOOBIG if the network has more
  * than 256 nodes or 65535 enabled connections; NEAT_E_ARG if cap is short. */
-int neat_blob_write(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t *buf, size_t cap,
-                    size_t *len);
+NEAT_API int neat_blob_write(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t *buf, size_t cap,
+                             size_t *len);
 
 /* ---- genome file: one genome with all its genes (docs/formats.md) -------
  * Unlike a blob, it keeps what evolution needs: node ids, innovation
@@ -220,16 +228,16 @@ int neat_blob_write(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
  * bias), into a new buffer *buf of *len bytes from allocator a (NULL: libc;
  * free it with the same allocator and *len). NEAT_E_ARG if g lacks the bias,
  * an input or an output of that shape. */
-int neat_genome_save(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t **buf, size_t *len,
-                     const neat_alloc *a);
+NEAT_API int neat_genome_save(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t **buf,
+                              size_t *len, const neat_alloc *a);
 /* Reads a genome file into g (initialised here; free it with
  * neat_genome_free) and its shape into *n_inputs, *n_outputs (either may be
  * NULL). Checks magic, version and CRC before anything else, then rebuilds
  * the genome through the genome API. NEAT_E_FORMAT, NEAT_E_CRC or
  * NEAT_E_TRUNCATED with *err_offset (if not NULL) the byte offset of the
  * problem; g is then empty. */
-int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, const uint8_t *buf, size_t len,
-                     const neat_alloc *a, size_t *err_offset);
+NEAT_API int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, const uint8_t *buf,
+                              size_t len, const neat_alloc *a, size_t *err_offset);
 
 /* ---- population ---------------------------------------------------------- */
 typedef struct neat_pop neat_pop;
@@ -242,16 +250,16 @@ typedef struct neat_start {
     int keep_weights;
 } neat_start;
 
-int neat_pop_create(neat_pop **out, const neat_params *p, const neat_start *start, uint64_t seed,
-                    const neat_alloc *alloc);
-void neat_pop_free(neat_pop *pop);
+NEAT_API int neat_pop_create(neat_pop **out, const neat_params *p, const neat_start *start, uint64_t seed,
+                             const neat_alloc *alloc);
+NEAT_API void neat_pop_free(neat_pop *pop);
 
-uint32_t neat_pop_size(const neat_pop *pop);
-uint32_t neat_pop_generation(const neat_pop *pop);
-const neat_params *neat_pop_params(const neat_pop *pop);
-const neat_genome *neat_pop_genome(const neat_pop *pop, uint32_t i);
+NEAT_API uint32_t neat_pop_size(const neat_pop *pop);
+NEAT_API uint32_t neat_pop_generation(const neat_pop *pop);
+NEAT_API const neat_params *neat_pop_params(const neat_pop *pop);
+NEAT_API const neat_genome *neat_pop_genome(const neat_pop *pop, uint32_t i);
 /* Thread-safe for distinct i. Rejects NaN, infinity and negatives (NEAT_E_FITNESS). */
-int neat_pop_set_fitness(neat_pop *pop, uint32_t i, double fitness);
+NEAT_API int neat_pop_set_fitness(neat_pop *pop, uint32_t i, double fitness);
 /* Fitness set for every genome: the next generation. On any error the
  * population stays in this generation (NEAT_E_FITNESS: neat_pop_error_index
  * names the first bad genome; NEAT_E_NOMEM: a retry gives the same
@@ -259,13 +267,13 @@ int neat_pop_set_fitness(neat_pop *pop, uint32_t i, double fitness);
  * are untouched, but the species' member order and representatives may
  * already be those the retry recomputes anyway, so a checkpoint saved then
  * can differ in those bytes while continuing to the same run. */
-int neat_pop_epoch(neat_pop *pop);
-uint32_t neat_pop_error_index(const neat_pop *pop);
+NEAT_API int neat_pop_epoch(neat_pop *pop);
+NEAT_API uint32_t neat_pop_error_index(const neat_pop *pop);
 
 /* After an epoch: the best genome of the generation just evaluated (highest
  * fitness, lowest index on ties), and the best ever. NULL before any epoch. */
-const neat_genome *neat_pop_last_best(const neat_pop *pop);
-const neat_genome *neat_pop_best_ever(const neat_pop *pop);
+NEAT_API const neat_genome *neat_pop_last_best(const neat_pop *pop);
+NEAT_API const neat_genome *neat_pop_best_ever(const neat_pop *pop);
 
 /* Species of the current generation. */
 typedef struct neat_species_info {
@@ -275,29 +283,29 @@ typedef struct neat_species_info {
     uint32_t since_improved; /* generations since its best fitness rose */
     double best_fitness;     /* best fitness ever of the species */
 } neat_species_info;
-uint32_t neat_pop_species_count(const neat_pop *pop);
-int neat_pop_species(const neat_pop *pop, uint32_t k, neat_species_info *info);
+NEAT_API uint32_t neat_pop_species_count(const neat_pop *pop);
+NEAT_API int neat_pop_species(const neat_pop *pop, uint32_t k, neat_species_info *info);
 /* The compatibility threshold the current generation was speciated with,
  * and the one the next speciation will use (moved by delta_t_step toward
  * target_species after each speciation). */
-double neat_pop_delta_t(const neat_pop *pop);
-double neat_pop_next_delta_t(const neat_pop *pop);
-uint32_t neat_pop_innovations(const neat_pop *pop); /* innovation numbers used so far */
+NEAT_API double neat_pop_delta_t(const neat_pop *pop);
+NEAT_API double neat_pop_next_delta_t(const neat_pop *pop);
+NEAT_API uint32_t neat_pop_innovations(const neat_pop *pop); /* innovation numbers used so far */
 /* Changes the parameters of a running population (a resumed run's
  * overrides). NEAT_E_PARAM if p is out of range or changes pop_size,
  * n_inputs or n_outputs, or max_nodes is below a genome's size. */
-int neat_pop_set_params(neat_pop *pop, const neat_params *p);
+NEAT_API int neat_pop_set_params(neat_pop *pop, const neat_params *p);
 
 /* ---- checkpoints (docs/formats.md) --------------------------------------
  * The whole state: parameters, genomes, species, delta_t, innovation list,
  * counters, PRNG, generation, fitness. Loading it and running on gives the
  * same run as never stopping. */
-int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len); /* *buf from the pop's allocator */
-void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len);
+NEAT_API int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len); /* *buf from the pop's allocator */
+NEAT_API void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
-int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+NEAT_API int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
 
-const char *neat_strerror(int err);
+NEAT_API const char *neat_strerror(int err);
 
 #ifdef __cplusplus
 }

@@ -55,9 +55,9 @@ typedef struct neat_coev_params {
     int random_fitness;
 } neat_coev_params;
 
-neat_coev_params neat_coev_params_default(void);
+NEAT_API neat_coev_params neat_coev_params_default(void);
 /* NEAT_E_PARAM with *field naming the first bad one. */
-int neat_coev_params_check(const neat_coev_params *cp, const char **field);
+NEAT_API int neat_coev_params_check(const neat_coev_params *cp, const char **field);
 
 typedef struct neat_coev neat_coev;
 
@@ -71,9 +71,9 @@ typedef struct neat_coev neat_coev;
  * is a count of wins against opponents that change every generation,
  * bounded by the games played and reached early, so the best never
  * "improves" and the rule would fire on a fixed schedule. */
-int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp, const neat_start *start,
-                     uint64_t seed, const neat_alloc *alloc);
-void neat_coev_free(neat_coev *c);
+NEAT_API int neat_coev_create(neat_coev **out, const neat_params *p, const neat_coev_params *cp,
+                              const neat_start *start, uint64_t seed, const neat_alloc *alloc);
+NEAT_API void neat_coev_free(neat_coev *c);
 
 /* What one population did in a generation. Sizes are hidden nodes and
  * enabled connections. */
@@ -105,19 +105,19 @@ typedef struct neat_coev_report {
  * On an error from play or the allocator nothing changes (the populations
  * reproduce on copies that replace them only when everything succeeded), so
  * a retry gives the same generation. */
-int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *rep);
+NEAT_API int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *rep);
 
-uint32_t neat_coev_generation(const neat_coev *c); /* the next generation to play */
+NEAT_API uint32_t neat_coev_generation(const neat_coev *c); /* the next generation to play */
 /* The start topology both populations were created from (its weights are
  * those it was given; every individual drew its own). */
-const neat_genome *neat_coev_start(const neat_coev *c);
-uint64_t neat_coev_seed(const neat_coev *c);
-const neat_coev_params *neat_coev_get_params(const neat_coev *c);
-const neat_pop *neat_coev_pop(const neat_coev *c, uint32_t which);
-uint32_t neat_coev_hof_count(const neat_coev *c, uint32_t which);
-const neat_genome *neat_coev_hof(const neat_coev *c, uint32_t which, uint32_t generation);
+NEAT_API const neat_genome *neat_coev_start(const neat_coev *c);
+NEAT_API uint64_t neat_coev_seed(const neat_coev *c);
+NEAT_API const neat_coev_params *neat_coev_get_params(const neat_coev *c);
+NEAT_API const neat_pop *neat_coev_pop(const neat_coev *c, uint32_t which);
+NEAT_API uint32_t neat_coev_hof_count(const neat_coev *c, uint32_t which);
+NEAT_API const neat_genome *neat_coev_hof(const neat_coev *c, uint32_t which, uint32_t generation);
 /* The last generation champion (NULL before the first generation). */
-const neat_genome *neat_coev_champion(const neat_coev *c);
+NEAT_API const neat_genome *neat_coev_champion(const neat_coev *c);
 
 /* The dominance tournament: dominant k (0-based; level k + 1). */
 typedef struct neat_dominant {
@@ -128,21 +128,22 @@ typedef struct neat_dominant {
     const uint16_t *wins;      /* [n_beaten] its wins against dominant k-1, k-2, ..., 0 (the order played) */
     const uint16_t *losses;    /* [n_beaten] that dominant's wins in the same comparison */
 } neat_dominant;
-uint32_t neat_coev_dominant_count(const neat_coev *c);
-int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d);
+NEAT_API uint32_t neat_coev_dominant_count(const neat_coev *c);
+NEAT_API int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d);
 
 /* New parameters for a resumed run: both populations' (pop_size, inputs and
  * outputs cannot change; pop_stagnation must stay 0) and the protocol's. */
-int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp);
+NEAT_API int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp);
 
 /* The whole state (docs/formats.md, "Coevolution checkpoint"): the start
  * topology, both populations, halls of fame, the species champions the next generation
  * plays, the dominance tournament. Loading it and stepping on gives the same
  * run as never stopping. */
-int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);
-void neat_coev_buf_free(const neat_coev *c, uint8_t *buf, size_t len);
+NEAT_API int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);
+NEAT_API void neat_coev_buf_free(const neat_coev *c, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
-int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+NEAT_API int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_alloc *alloc,
+                            size_t *err_offset);
 
 #ifdef __cplusplus
 }

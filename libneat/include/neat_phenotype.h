@@ -8,10 +8,10 @@
  *     neat_phenotype ph;
  *     neat_phenotype_init(&ph, NULL);               // NULL: libc's realloc/free
  *     neat_phenotype_load(&ph, genome, &params);    // encode + validate + lay out
+ *     nrt_reset(&ph.net);                           // before every trial
  *     nrt_q15 *in = nrt_inputs(&ph.net);            // n_inputs + 1 slots
  *     in[0] = NRT_ONE;                              // the bias, always NRT_ONE
  *     in[1] = neat_q15(x1); in[2] = neat_q15(x2);   // the task's inputs
- *     nrt_reset(&ph.net);                           // before every trial
  *     nrt_settle(&ph.net, in, out, 20);             // feed-forward tasks
  *     // or nrt_step(&ph.net, in, out) once per time step (control tasks)
  *     y = neat_from_q15(out[0]);
@@ -36,7 +36,8 @@
  *   output. A feed-forward task calls nrt_settle (steps until nothing
  *   changes); a recurrent or control task calls nrt_step once per time step.
  *   nrt_reset zeroes all activations: call it between trials, or the last
- *   trial's state leaks into the next.
+ *   trial's state leaks into the next. It zeroes the input slots too, so
+ *   write the inputs through nrt_inputs after it, not before.
  * - ph.blob / ph.blob_len hold the network's champion blob (docs/formats.md)
  *   after a load: write them to a file and the runtime loads exactly this
  *   network on a microcontroller.
@@ -62,24 +63,24 @@ typedef struct neat_phenotype {
 } neat_phenotype;
 
 /* Empty buffers; every allocation goes through a (NULL: libc). */
-void neat_phenotype_init(neat_phenotype *ph, const neat_alloc *a);
+NEAT_API void neat_phenotype_init(neat_phenotype *ph, const neat_alloc *a);
 /* Releases the buffers; ph may be initialised again. */
-void neat_phenotype_free(neat_phenotype *ph);
+NEAT_API void neat_phenotype_free(neat_phenotype *ph);
 /* Encodes g as a blob for a task of p->n_inputs inputs and p->n_outputs
  * outputs and loads it into ph->net (reset). Returns 0, a negative
  * neat_error from the encoder (NEAT_E_TOOBIG, NEAT_E_NOMEM), or a negative
  * nrt_error - 100. */
-int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_params *p);
+NEAT_API int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_params *p);
 /* A blob (neat_phenotype_load's, read from a file or sent by another
  * process) copied and loaded: the same network. 0, NEAT_E_NOMEM, or a
  * negative nrt_error - 100 (the runtime checks the blob before trusting a
  * byte of it). */
-int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len);
+NEAT_API int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len);
 
 /* double -> Q1.15, rounded to nearest, saturating to [-1, 1 - 2^-15] */
-nrt_q15 neat_q15(double x);
+NEAT_API nrt_q15 neat_q15(double x);
 /* Q1.15 -> double (exact) */
-double neat_from_q15(nrt_q15 q);
+NEAT_API double neat_from_q15(nrt_q15 q);
 
 #ifdef __cplusplus
 }

@@ -22,15 +22,23 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "neat_duel_version.h"
+
 /* C++ callers link against the C symbols */
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 /* ---- versions ---------------------------------------------------------- */
-#define NRT_VERSION_MAJOR 1 /* library version: the code */
-#define NRT_VERSION_MINOR 0
+/* the library's version: the project's (neat_duel_version.h) */
+#define NRT_VERSION_MAJOR NEAT_DUEL_VERSION_MAJOR
+#define NRT_VERSION_MINOR NEAT_DUEL_VERSION_MINOR
 #define NRT_FORMAT_VERSION 1 /* blob format version: the bytes */
+
+/* the export attribute of the shared libraries (empty in static and firmware builds) */
+#ifndef NRT_API
+#define NRT_API NEAT_DUEL_EXPORT
+#endif
 
 /* ---- fixed-point types ------------------------------------------------- */
 /* Activations, inputs and outputs: Q1.15, 32767 = 1.0 - 2^-15. */
@@ -104,51 +112,51 @@ typedef struct nrt_net {
 
 /* CRC-32 (IEEE 802.3, reflected, as zlib) of len bytes, continuing from crc
  * (start with 0). */
-uint32_t nrt_crc32(uint32_t crc, const void *data, size_t len);
+NRT_API uint32_t nrt_crc32(uint32_t crc, const void *data, size_t len);
 
 /* From the first NRT_HEADER_SIZE bytes: the blob's total size and the bytes of
  * memory nrt_load will need. Checks magic, version and counts, not the CRC.
  * Either output pointer may be NULL. Returns 0 or a negative nrt_error. */
-int nrt_inspect(const uint8_t *blob, size_t len, size_t *blob_size, size_t *mem_required);
+NRT_API int nrt_inspect(const uint8_t *blob, size_t len, size_t *blob_size, size_t *mem_required);
 
 /* Same as nrt_inspect, memory only. */
-int nrt_mem_required(const uint8_t *blob, size_t len, size_t *mem_required);
+NRT_API int nrt_mem_required(const uint8_t *blob, size_t len, size_t *mem_required);
 
 /* Validates the whole blob (size, magic, version, header, counts, CRC,
  * indices, order) and, only then, lays the network out in mem (any
  * alignment; mem_len >= nrt_mem_required). The network starts reset.
  * Returns 0 or a negative nrt_error; on error net is zeroed. */
-int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t mem_len);
+NRT_API int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t mem_len);
 
 /* All hidden and output activations back to 0 (start of a game). */
-void nrt_reset(nrt_net *net);
+NRT_API void nrt_reset(nrt_net *net);
 
 /* One synchronous propagation: every non-input node's new activation from the
  * previous step's activations (the inputs being those given now). inputs has
  * n_inputs values, outputs receives n_outputs values (may be NULL). */
-void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs);
+NRT_API void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs);
 
 /* The n_inputs slots the next nrt_step reads its inputs from: a caller may
  * write the sensor values here and pass this pointer to nrt_step as inputs,
  * sparing the copy (valid until that step). */
-nrt_q15 *nrt_inputs(nrt_net *net);
+NRT_API nrt_q15 *nrt_inputs(nrt_net *net);
 
 /* The n_outputs values the last nrt_step produced, in place (valid until
  * the next step): the alternative to copying them out. */
-const nrt_q15 *nrt_outputs(const nrt_net *net);
+NRT_API const nrt_q15 *nrt_outputs(const nrt_net *net);
 
 /* For feed-forward tasks: steps with the same inputs until no activation
  * changes, at most max_steps times. Returns the number of steps taken, or
  * -1 if the network was still changing after max_steps (outputs then hold
  * the last step's values). */
-int nrt_settle(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs, int max_steps);
+NRT_API int nrt_settle(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs, int max_steps);
 
 /* The fixed-point sigmoid: Q1.15 of 1/(1+exp(-4.9 x)) for x = sum / 2^27. */
-nrt_q15 nrt_sigmoid(int64_t sum);
+NRT_API nrt_q15 nrt_sigmoid(int64_t sum);
 
 #ifndef NRT_NO_STRERROR
 /* A short English description of an nrt_error (host builds only). */
-const char *nrt_strerror(int err);
+NRT_API const char *nrt_strerror(int err);
 #endif
 
 #ifdef __cplusplus

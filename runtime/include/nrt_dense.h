@@ -44,7 +44,7 @@ typedef struct nrt_dense {
  * the state lives in d: write the inputs through nrt_dense_inputs, read the
  * outputs at nrt_dense_outputs, and nrt_dense_save puts the state back into
  * the network. d stays valid while net's weights do. */
-int nrt_dense_make(nrt_dense *d, const nrt_net *net);
+NRT_API int nrt_dense_make(nrt_dense *d, const nrt_net *net);
 
 /* The input slots of the current activations (nrt_inputs for d's state). */
 static inline nrt_q15 *nrt_dense_inputs(nrt_dense *d)
@@ -60,11 +60,11 @@ static inline const nrt_q15 *nrt_dense_outputs(const nrt_dense *d)
 
 /* One step of d's state, exactly nrt_step(net, nrt_inputs(net), NULL) for
  * the network d was made from in that state. */
-void nrt_dense_step(nrt_dense *d);
+NRT_API void nrt_dense_step(nrt_dense *d);
 
 /* d's state into net (the network d was made from): net then holds what
  * nrt_step would have left in it. */
-void nrt_dense_save(const nrt_dense *d, nrt_net *net);
+NRT_API void nrt_dense_save(const nrt_dense *d, nrt_net *net);
 
 #ifdef __cplusplus
 }

@@ -6,6 +6,8 @@
 #include "duel.h"
 #include "neat.h"
 #include "neat_coev.h"
+#include "neat_duel_version.h"
+#include "neat_phenotype.h"
 #include "nrt.h"
 #include "nrt_dense.h"
 
@@ -56,6 +58,21 @@ int main()
     CHECK(duel_play(&west, &east, DUEL_TRAINING, &r, nullptr, nullptr) == DUEL_OK);
     CHECK(r.steps > 0 && duel_outcome_text(r.outcome) != nullptr);
     CHECK(duel_builtin_parse("forager") == DUEL_FORAGER);
+
+    // neat_phenotype.h: the genome as a network, through the allocation hook's default
+    neat_phenotype ph;
+    neat_phenotype_init(&ph, nullptr);
+    p.n_inputs = DUEL_N_INPUTS - 1;
+    p.n_outputs = DUEL_N_OUTPUTS;
+    neat_genome_init(&g);
+    CHECK(neat_genome_minimal(&g, DUEL_N_INPUTS - 1, DUEL_N_OUTPUTS, nullptr) == NEAT_OK);
+    CHECK(neat_phenotype_load(&ph, &g, &p) == 0 && ph.net.n_inputs == DUEL_N_INPUTS);
+    CHECK(neat_q15(1.0) == NRT_ONE && neat_from_q15(0) == 0.0);
+    neat_phenotype_free(&ph);
+    neat_genome_free(&g, nullptr);
+    // one version everywhere (neat_duel_version.h)
+    CHECK(NEAT_VERSION_MAJOR == NRT_VERSION_MAJOR && NEAT_VERSION_MINOR == NRT_VERSION_MINOR);
+    CHECK(NEAT_DUEL_VERSION_STRING[0] != '\0');
     std::printf("C++: every public header; a game of %u steps: %s\n", (unsigned)r.steps, duel_outcome_text(r.outcome));
     return 0;
 }
