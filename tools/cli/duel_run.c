@@ -340,10 +340,11 @@ static int duel_loop(duel_run *R)
         if (R->log_failed)
             return 1; /* what was done is saved; resume continues from it */
         if (duel_stop || duel_mpi_stop_requested()) {
+            uint32_t n = neat_coev_generation(R->coev);
             duel_clear_bar(R);
-            duel_log(R, "interrupted before generation %u", neat_coev_generation(R->coev));
-            fprintf(stderr, "duel_evolve: interrupted; %u generations are saved. Resume with: duel_evolve resume %s\n",
-                    neat_coev_generation(R->coev), R->dir);
+            duel_log(R, "interrupted before generation %u", n);
+            fprintf(stderr, "duel_evolve: interrupted; %u generation%s saved. Resume with: duel_evolve resume %s\n",
+                    n, n == 1 ? " is" : "s are", R->dir);
             return 130;
         }
         R->gen_in_flight = neat_coev_generation(R->coev);
