@@ -368,6 +368,7 @@ int duel_cmd_render_net(int argc, char **argv)
     char msg[512], *text = NULL, *dargv[6];
     size_t text_len = 0;
     FILE *f;
+    duel_dot_opts o = {0};
     int i, fd, st, rc = 0;
 
     for (i = 0; i < argc; i++) {
@@ -377,15 +378,22 @@ int duel_cmd_render_net(int argc, char **argv)
                 return 2;
             }
             out = argv[++i];
+        } else if (strcmp(argv[i], "--min-weight") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "duel_evolve: render-net: --min-weight needs a value\n");
+                return 2;
+            }
+            if (duel_dot_parse_min_weight("render-net", argv[++i], &o) != 0)
+                return 2;
         } else if (argv[i][0] == '-' || blob != NULL) {
-            fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png\n");
+            fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--min-weight W]\n");
             return 2;
         } else {
             blob = argv[i];
         }
     }
     if (blob == NULL || out == NULL) {
-        fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png\n");
+        fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--min-weight W]\n");
         return 2;
     }
     if (duel_exec_find("dot", dot, sizeof dot) != 0) {
@@ -402,7 +410,7 @@ int duel_cmd_render_net(int argc, char **argv)
         fprintf(stderr, "duel_evolve: render-net: out of memory\n");
         return 1;
     }
-    if (duel_dot_blob(f, blob) != 0) {
+    if (duel_dot_blob(f, blob, &o) != 0) {
         fclose(f);
         free(text);
         return 2;
