@@ -487,8 +487,9 @@ static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
         n_shown += (uint32_t)duel_dot_shown(x, k, o);
     fprintf(f, "/* duel_evolve dot: a champion network (docs/tools.md) */\ndigraph champion {\n");
     /* at most 20 x 14 inches at 96 dpi (1920 x 1344 pixels): a large network is scaled down, not a poster */
-    fprintf(f, "  rankdir=BT;\n  nodesep=0.15;\n  ranksep=0.8;\n  dpi=96;\n  size=\"20,14\";\n");
-    fprintf(f, "  node [fontname=\"Helvetica\", fontsize=11];\n  edge [arrowsize=0.6];\n");
+    fprintf(f, "  rankdir=BT;\n  nodesep=0.08;\n  ranksep=0.8;\n  dpi=96;\n  size=\"20,14\";\n");
+    /* boxes just round their names: 13 sensors side by side are the width of the picture */
+    fprintf(f, "  node [fontname=\"Helvetica\", fontsize=11, margin=\"0.04,0.02\", height=0.3];\n  edge [arrowsize=0.6];\n");
     fprintf(f, "  graph [fontname=\"Helvetica\", fontsize=12];\n");
     duel_dot_legend(f, x, o, n_shown);
 

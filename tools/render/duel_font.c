@@ -100,7 +100,10 @@ static const uint8_t duel_font_glyphs[95][DUEL_FONT_H] = {
     {0x00, 0x00, 0x08, 0x15, 0x02, 0x00, 0x00}, /* ~ */
 };
 
-/* Anything outside printable ASCII: a hollow box, so a name with other
+/* DUEL_FONT_ELLIPSIS: three dots on the base line, for a shortened name. */
+static const uint8_t duel_font_ellipsis[DUEL_FONT_H] = {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x15};
+
+/* Anything else outside printable ASCII: a hollow box, so a name with other
  * bytes still shows how long it is. */
 static const uint8_t duel_font_box[DUEL_FONT_H] = {0x1f, 0x11, 0x11, 0x11, 0x11, 0x11, 0x1f};
 
@@ -112,5 +115,7 @@ int duel_font_drop(char c)
 const uint8_t *duel_font_glyph(char c)
 {
     unsigned char u = (unsigned char)c;
+    if (u == (unsigned char)DUEL_FONT_ELLIPSIS)
+        return duel_font_ellipsis;
     return u >= 32 && u <= 126 ? duel_font_glyphs[u - 32] : duel_font_box;
 }

@@ -12,6 +12,8 @@
 /* g, p, q and y hang this many dots below the others (their tails): a
  * line of text takes DUEL_FONT_H + DUEL_FONT_DROP dots */
 #define DUEL_FONT_DROP 2
+/* The character drawn as an ellipsis (DEL, which no name shows) */
+#define DUEL_FONT_ELLIPSIS '\x7f'
 
 /* The DUEL_FONT_H rows of c's glyph, top first, bit (DUEL_FONT_W - 1 - x)
  * set where column x is drawn. */

@@ -200,22 +200,40 @@ static void duel_rd_text_at(const char *s, double x, double cy, int align, doubl
     duel_rd_text(s, align < 0 ? x : (align == 0 ? x - w / 2 : x - w), y, dot);
 }
 
-/* name shortened to at most max characters: its start replaced by "..",
- * since a path's end (the file) says most. */
+/* name shortened to at most max characters: its start replaced by an
+ * ellipsis, since a path's end (the file) says most; a path is cut at a
+ * '/' where that fits ("…/gen-00127.blob"). */
 static void duel_rd_fit(char *out, size_t out_len, const char *name, int max)
 {
-    size_t n = strlen(name), keep, at = 0;
-    if (max < 3)
-        max = 3;
-    keep = n <= (size_t)max ? n : (size_t)max - 2;
-    if (keep + 3 > out_len)
-        keep = out_len - 3;
-    if (keep < n) {
-        out[at++] = '.';
-        out[at++] = '.';
+    size_t n = strlen(name), keep, at = 0, i;
+    if (max < 2)
+        max = 2;
+    if (n <= (size_t)max) {
+        snprintf(out, out_len, "%s", name);
+        return;
     }
+    keep = (size_t)max - 1;
+    for (i = 0; i < n; i++)
+        if (name[i] == '/' && n - i <= keep) {
+            keep = n - i;
+            break;
+        }
+    if (keep + 2 > out_len)
+        keep = out_len - 2;
+    out[at++] = DUEL_FONT_ELLIPSIS;
     memcpy(out + at, name + n - keep, keep);
     out[at + keep] = '\0';
+}
+
+/* The shortest a name is shortened to before its last path component is
+ * cut: "…/BASENAME" for a path, else 8 characters. */
+static int duel_rd_short_len(const char *name)
+{
+    const char *slash = strrchr(name, '/');
+    int n = (int)strlen(name);
+    if (slash != NULL)
+        return 1 + (int)strlen(slash);
+    return n < 8 ? n : 8;
 }
 
 static double duel_rd_clamp01(double v)
@@ -262,14 +280,15 @@ static void duel_rd_energy_bar(const duel_render_geom *g, int side, double energ
 static void duel_rd_legend(const duel_render_geom *g, const char *west, const char *east)
 {
     double dot = g->dot, rad = 3.5 * dot, adv = DUEL_FONT_ADV * dot;
-    int room = (int)((g->b - 4 * rad - 4 * dot) / adv) - 2 * 6 - 3; /* "west: ", "east: ", three apart */
+    int room = (int)((g->b - 4 * rad - 6 * dot) / adv) - 2 * 6 - 3; /* "west: ", "east: ", three apart */
     int nw = (int)strlen(west), ne = (int)strlen(east), mw = nw, me = ne;
     char fit[300], line[320];
     if (nw + ne > room) {
+        /* the longer loses first: cut to its file name if the other then fits whole */
         int half = room / 2;
-        if (nw <= half)
+        if (nw <= half || (ne >= nw && nw + duel_rd_short_len(east) <= room))
             me = room - nw;
-        else if (ne <= half)
+        else if (ne <= half || nw + duel_rd_short_len(west) <= room)
             mw = room - ne;
         else
             mw = me = half;
@@ -281,10 +300,10 @@ static void duel_rd_legend(const duel_render_geom *g, const char *west, const ch
     duel_rd_colour(DUEL_RGB_TEXT);
     duel_rd_fit(fit, sizeof fit, west, mw);
     snprintf(line, sizeof line, "west: %s", fit);
-    duel_rd_text_at(line, g->ox + 2 * rad + 2 * dot, g->legend_y, -1, dot);
+    duel_rd_text_at(line, g->ox + 2 * rad + 3 * dot, g->legend_y, -1, dot);
     duel_rd_fit(fit, sizeof fit, east, me);
     snprintf(line, sizeof line, "east: %s", fit);
-    duel_rd_text_at(line, g->ox + g->b - 2 * rad - 2 * dot, g->legend_y, 1, dot);
+    duel_rd_text_at(line, g->ox + g->b - 2 * rad - 3 * dot, g->legend_y, 1, dot);
 }
 
 /* Each robot's path so far: a stroke through its centres in frames
@@ -451,7 +470,7 @@ void duel_render_frame_info(duel_render *r, const duel_frame *f, unsigned flags,
         tw = duel_render_text_width(line, g.dot);
         /* light text on the dark strip, the winner's colour as a disc before it (blue text would be dim) */
         duel_rd_colour(c);
-        duel_rd_disc(r->size / 2.0 - tw / 2 - 2 * g.dot - rad, g.bottom_y, rad);
+        duel_rd_disc(r->size / 2.0 - tw / 2 - 4 * g.dot - rad, g.bottom_y, rad);
         duel_rd_colour(DUEL_RGB_TEXT);
         duel_rd_text_at(line, r->size / 2.0, g.bottom_y, 0, g.dot);
     } else if (info != NULL && info->food_config != DUEL_RENDER_NO_FOOD) {
