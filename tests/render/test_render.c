@@ -354,6 +354,24 @@ static void test_collision_frame(void **state)
         assert_int_equal(tr_count(&img, 0, 0, TR_SIZE, TR_SIZE, DUEL_RGB_TRAIL_EAST), 0);
         free(img.rgb);
         remove("trails.png");
+        /* names far too long for the row: each loses its start and they stay
+         * apart (a gap of the frame's colour in the middle of the row) */
+        {
+            static char lw[400], le[400];
+            memset(lw, 'w', sizeof lw - 1);
+            memset(le, 'e', sizeof le - 1);
+            lw[100] = le[50] = '/';
+            info.west = lw;
+            info.east = le;
+            duel_render_frame_info(&r, mid, 0, &info);
+            assert_int_equal(duel_render_write_png(&r, "trails.png", err, sizeof err), 0);
+            tr_read_png("trails.png", &img);
+            assert_true(tr_count(&img, 0, ly - 6, TR_SIZE / 2 - 10, ly + 6, DUEL_RGB_TEXT) > 300);
+            assert_true(tr_count(&img, TR_SIZE / 2 + 10, ly - 6, TR_SIZE, ly + 6, DUEL_RGB_TEXT) > 300);
+            assert_int_equal(tr_count(&img, TR_SIZE / 2 - 4, ly - 6, TR_SIZE / 2 + 4, ly + 6, DUEL_RGB_TEXT), 0);
+            free(img.rgb);
+            remove("trails.png");
+        }
         duel_render_frame(&r, mid, DUEL_RENDER_TRAILS);
         assert_int_equal(duel_render_write_png(&r, "trails.png", err, sizeof err), 0);
         tr_read_png("trails.png", &img);
