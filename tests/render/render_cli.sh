@@ -49,6 +49,12 @@ deterministic)
   [ "$n" -ge 2 ] || fail "only $n frames"
   "$duel" render "${game[@]}" --out "$tmp/c" --size 160 --every 40 > /dev/null
   cmp -s "$tmp/a/frame-00001.png" "$tmp/c/frame-00001.png" && fail "--sensors changed nothing"
+  # --trails: other pixels on a later frame, the first frame (no path yet) the same; deterministic too
+  "$duel" render "${game[@]}" --out "$tmp/t" --size 160 --every 40 --trails > /dev/null
+  "$duel" render "${game[@]}" --out "$tmp/t2" --size 160 --every 40 --trails > /dev/null
+  cmp -s "$tmp/c/frame-00000.png" "$tmp/t/frame-00000.png" || fail "--trails changed frame 0"
+  cmp -s "$tmp/c/frame-00001.png" "$tmp/t/frame-00001.png" && fail "--trails changed nothing"
+  cmp "$tmp/t/frame-00001.png" "$tmp/t2/frame-00001.png" || fail "--trails: two runs differ"
   [ -z "$(find "$tmp" -name '*.tmp')" ] || fail "temporary files left: $(find "$tmp" -name '*.tmp')"
   ;;
 video)
@@ -127,6 +133,12 @@ render-net)
   "$duel" dot "$tmp/net202a.blob" | dot -Tpng > "$tmp/direct.png"
   "$duel" render-net "$tmp/net202a.blob" --out "$tmp/net2.png"
   [ "$(png_size "$tmp/direct.png")" = "$(png_size "$tmp/net2.png")" ] || fail "not the dot command's picture"
+  # at most about 2000 pixels wide for a 202-connection network (size="20,14" at 96 dpi)
+  [ "$w" -le 1920 ] && [ "$h" -le 1344 ] || fail "net.png is $w x $h, more than 1920 x 1344"
+  "$duel" render-net "$tmp/net202a.blob" --min-weight 1 --out "$tmp/net3.png"
+  "$duel" dot "$tmp/net202a.blob" --min-weight 1 | dot -Tpng > "$tmp/direct3.png"
+  [ "$(png_size "$tmp/direct3.png")" = "$(png_size "$tmp/net3.png")" ] || fail "--min-weight: not the dot command's picture"
+  [ "$(png_size "$tmp/net3.png")" != "$(png_size "$tmp/net2.png")" ] || fail "--min-weight 1 changed nothing"
   [ -z "$(find "$tmp" -name '*.tmp')" ] || fail "temporary files left"
   ;;
 bad-input)
@@ -167,6 +179,8 @@ bad-input)
   expect_bad "bad.blob: not a valid champion blob" render-net "$tmp/bad.blob" --out "$tmp/n.png"
   expect_bad "n.png: cannot write" render-net "$tmp/net39a.blob" --out "$tmp/nodir/n.png"
   expect_bad "usage" render-net "$tmp/net39a.blob"
+  expect_bad "min-weight takes a number from 0 to 8" render-net "$tmp/net39a.blob" --min-weight -1 --out "$tmp/n.png"
+  expect_bad "min-weight takes a number from 0 to 8" render-net "$tmp/net39a.blob" --min-weight x --out "$tmp/n.png"
   [ ! -e "$tmp/n.png" ] || fail "render-net left n.png"
   [ -z "$(find "$tmp" -name '*.tmp')" ] || fail "temporary files left"
   ;;

@@ -65,7 +65,7 @@ static int tr_count_files(const char *s)
 /* Board position -> the pixel that holds it (integer divisions as documented). */
 static void tr_pixel(int size, double x, double y, int *i, int *j)
 {
-    int hud = size * 3 / 40, m = size / 40, b = size - hud - m, ox = (size - b) / 2;
+    int hud = size * 3 / 40, m = size / 30, b = size - hud - m, ox = (size - b) / 2;
     double px = ox + x * b / 600.0, py = hud + (600.0 - y) * b / 600.0, qx, qy;
     duel_render_to_pixel(size, x, y, &qx, &qy);
     assert_true(fabs(px - qx) < 1e-9 && fabs(py - qy) < 1e-9);
@@ -108,6 +108,17 @@ static uint32_t tr_at_board(const tr_image *img, double x, double y)
     return tr_at(img, i, j);
 }
 
+/* Pixels of colour c in [x0, x1) x [y0, y1), clipped to the image. */
+static long tr_count(const tr_image *img, int x0, int y0, int x1, int y1, uint32_t c)
+{
+    long n = 0;
+    int i, j;
+    for (j = y0 < 0 ? 0 : y0; j < y1 && j < img->h; j++)
+        for (i = x0 < 0 ? 0 : x0; i < x1 && i < img->w; i++)
+            n += tr_at(img, i, j) == c;
+    return n;
+}
+
 /* Draws f, writes it as name in the scratch directory, reads it back. */
 static void tr_render(duel_render *r, const duel_frame *f, unsigned flags, const char *name, tr_image *img)
 {
@@ -148,7 +159,9 @@ static void test_known_state(void **state)
     duel_frame f;
     tr_image img;
     char err[256];
-    int s, i, j, hud = TR_SIZE * 3 / 40;
+    int s, i, j, by;
+    long n_west, n_step;
+    duel_render_geom g;
     (void)state;
 
     assert_int_equal(duel_render_open(&r, TR_SIZE, err, sizeof err), 0);
@@ -173,19 +186,29 @@ static void test_known_state(void **state)
     assert_int_equal(tr_at_board(&img, 420, 180 + 6), DUEL_RGB_NOSE);
     assert_int_equal(tr_at_board(&img, 420, 180 - 6), DUEL_RGB_EAST);
     assert_int_equal(tr_at_board(&img, 420 + 6, 180), DUEL_RGB_EAST);
-    assert_int_equal(tr_at_board(&img, 150 - 9.6, 450), DUEL_RGB_OUTLINE);
+    /* the outline is under a pixel wide at 0.89 pixel a unit: the rim pixel
+     * is mostly outline (green well below the robot's 0x77 and the board's) */
+    assert_true(((tr_at_board(&img, 150 - 9.6, 450) >> 8) & 255) < 0x60);
     assert_int_equal(tr_at_board(&img, 150 - 12, 450), DUEL_RGB_BOARD);
     /* the energy bars (1200 of 1200 + 9 * 200): west filled from the left to
      * 40 %, east from the right */
+    duel_render_geom_of(TR_SIZE, &g);
+    by = (int)((g.bar_y0 + g.bar_y1) / 2);
     {
-        int b = TR_SIZE - hud - TR_SIZE / 40, ox = (TR_SIZE - b) / 2, len = (int)(0.36 * b);
-        assert_int_equal(tr_at(&img, ox + len / 5, hud / 2), DUEL_RGB_WEST);
-        assert_int_equal(tr_at(&img, ox + len * 7 / 10, hud / 2), DUEL_RGB_BAR_EMPTY);
-        assert_int_equal(tr_at(&img, ox + b - len / 5, hud / 2), DUEL_RGB_EAST);
-        assert_int_equal(tr_at(&img, ox + b - len * 7 / 10, hud / 2), DUEL_RGB_BAR_EMPTY);
+        double len = g.bar_x1[0] - g.bar_x0[0];
+        assert_int_equal(tr_at(&img, (int)(g.bar_x0[0] + len / 5), by), DUEL_RGB_WEST);
+        assert_int_equal(tr_at(&img, (int)(g.bar_x0[0] + len * 7 / 10), by), DUEL_RGB_BAR_EMPTY);
+        assert_int_equal(tr_at(&img, (int)(g.bar_x1[1] - len / 5), by), DUEL_RGB_EAST);
+        assert_int_equal(tr_at(&img, (int)(g.bar_x1[1] - len * 7 / 10), by), DUEL_RGB_BAR_EMPTY);
     }
-    /* the step number: 8 has the middle segment across the centre, 0 not */
-    assert_int_equal(tr_at(&img, TR_SIZE / 2, hud / 2), DUEL_RGB_DIGITS);
+    /* the energy numbers beside the bars and "step 8" in the middle, in the
+     * text colour; no legend row without names */
+    n_west = tr_count(&img, (int)g.num_x0[0], (int)g.bar_y0, (int)g.num_x1[0], (int)g.bar_y1 + 3, DUEL_RGB_TEXT);
+    assert_true(n_west > 20);
+    assert_true(tr_count(&img, (int)g.num_x0[1], (int)g.bar_y0, (int)g.num_x1[1], (int)g.bar_y1 + 3, DUEL_RGB_TEXT) > 20);
+    n_step = tr_count(&img, TR_SIZE / 2 - 40, (int)g.bar_y0, TR_SIZE / 2 + 40, (int)g.bar_y1 + 3, DUEL_RGB_TEXT);
+    assert_true(n_step > 30);
+    assert_int_equal(tr_count(&img, 0, 0, TR_SIZE, (int)g.bar_y0 - 1, DUEL_RGB_TEXT), 0);
     free(img.rgb);
 
     f.t = 0;
@@ -194,10 +217,14 @@ static void test_known_state(void **state)
     tr_render(&r, &f, 0, "eaten.png", &img);
     assert_int_equal(tr_at_board(&img, 300, 300), DUEL_RGB_BOARD);
     assert_int_equal(tr_at_board(&img, 200, 300), DUEL_RGB_FOOD);
-    assert_int_equal(tr_at(&img, TR_SIZE / 2, hud / 2), DUEL_RGB_FRAME);
+    /* "step 0" and 2400 are other pixels than "step 8" and 1200 */
+    assert_true(tr_count(&img, TR_SIZE / 2 - 40, (int)g.bar_y0, TR_SIZE / 2 + 40, (int)g.bar_y1 + 3, DUEL_RGB_TEXT) !=
+                n_step);
+    assert_true(tr_count(&img, (int)g.num_x0[0], (int)g.bar_y0, (int)g.num_x1[0], (int)g.bar_y1 + 3, DUEL_RGB_TEXT) !=
+                n_west);
     {
-        int b = TR_SIZE - hud - TR_SIZE / 40, ox = (TR_SIZE - b) / 2, len = (int)(0.36 * b);
-        assert_int_equal(tr_at(&img, ox + len * 7 / 10, hud / 2), DUEL_RGB_WEST); /* 80 % now */
+        double len = g.bar_x1[0] - g.bar_x0[0];
+        assert_int_equal(tr_at(&img, (int)(g.bar_x0[0] + len * 7 / 10), by), DUEL_RGB_WEST); /* 80 % now */
     }
     free(img.rgb);
 
@@ -273,30 +300,87 @@ static void test_collision_frame(void **state)
         for (i = 0; i < img.w; i++) {
             uint32_t c = tr_at(&img, i, j);
             s = c == DUEL_RGB_WEST ? 0 : (c == DUEL_RGB_EAST ? 1 : -1);
-            if (s < 0 || j < TR_SIZE * 3 / 40) /* the energy bars are in the strip */
+            if (s < 0 || j < TR_SIZE * 3 / 40 || j >= TR_SIZE - TR_SIZE / 30) /* the strips */
                 continue;
             cx[s] += i + 0.5;
             cy[s] += j + 0.5;
             n[s]++;
         }
     for (s = 0; s < 2; s++) {
-        double px, py, k = (TR_SIZE - TR_SIZE * 3 / 40 - TR_SIZE / 40) / 600.0;
+        double px, py, k = (TR_SIZE - TR_SIZE * 3 / 40 - TR_SIZE / 30) / 600.0;
         assert_true(n[s] > 100);
         duel_render_to_pixel(TR_SIZE, last->w.robot[s].x / 65536.0, last->w.robot[s].y / 65536.0, &px, &py);
         dx = (cx[s] / n[s] - px) / k;
         dy = (cy[s] / n[s] - py) / k;
         assert_true(sqrt(dx * dx + dy * dy) < 2.0);
     }
-    /* the step number of the last frame in the winner's colour */
-    n[0] = n[1] = 0;
-    for (j = 0; j < TR_SIZE * 3 / 40; j++)
-        for (i = TR_SIZE / 2 - 40; i < TR_SIZE / 2 + 40; i++) {
-            n[0] += tr_at(&img, i, j) == DUEL_RGB_WEST;
-            n[1] += tr_at(&img, i, j) == DUEL_RGB_DIGITS;
-        }
-    assert_true(n[0] > 50);
-    assert_int_equal(n[1], 0);
+    /* the outcome on the last frame, in the bottom strip: its text and a disc
+     * in the winner's colour, none in the loser's */
+    j = TR_SIZE - TR_SIZE / 30;
+    assert_true(tr_count(&img, 0, j, TR_SIZE, TR_SIZE, DUEL_RGB_TEXT) > 200);
+    assert_true(tr_count(&img, 0, j, TR_SIZE, TR_SIZE, DUEL_RGB_WEST) > 20);
+    assert_int_equal(tr_count(&img, 0, j, TR_SIZE, TR_SIZE, DUEL_RGB_EAST), 0);
     free(img.rgb);
+
+    /* with the legend, the food line and the trails (what render draws):
+     * text in both halves of the legend row, the dim food line on a frame
+     * before the last, west's trail where it started (it moved away; idle
+     * did not) and half way, and none of that without the info */
+    {
+        duel_render_info info;
+        duel_render_geom g;
+        const duel_frame *mid = &rep.frames[rep.n / 2];
+        int ly;
+        duel_render_geom_of(TR_SIZE, &g);
+        ly = (int)g.legend_y;
+        info.west = "builtin:forager-hunter";
+        info.east = "builtin:idle";
+        info.food_config = DUEL_TRAINING;
+        info.trail = rep.frames;
+        info.n_trail = rep.n / 2 + 1;
+        duel_render_frame_info(&r, mid, DUEL_RENDER_TRAILS, &info);
+        assert_int_equal(duel_render_write_png(&r, "trails.png", err, sizeof err), 0);
+        tr_read_png("trails.png", &img);
+        assert_true(tr_count(&img, 0, ly - 6, TR_SIZE / 2, ly + 6, DUEL_RGB_TEXT) > 100);
+        assert_true(tr_count(&img, TR_SIZE / 2, ly - 6, TR_SIZE, ly + 6, DUEL_RGB_TEXT) > 50);
+        assert_true(tr_count(&img, 0, ly - 6, TR_SIZE / 2, ly + 6, DUEL_RGB_WEST) > 10); /* the colour disc */
+        assert_true(tr_count(&img, TR_SIZE / 2, ly - 6, TR_SIZE, ly + 6, DUEL_RGB_EAST) > 10);
+        assert_true(tr_count(&img, 0, TR_SIZE - TR_SIZE / 30, TR_SIZE, TR_SIZE, DUEL_RGB_TEXT_DIM) > 50);
+        assert_int_equal(tr_at_board(&img, rep.frames[0].w.robot[0].x / 65536.0, rep.frames[0].w.robot[0].y / 65536.0),
+                         DUEL_RGB_TRAIL_WEST);
+        assert_int_equal(tr_at_board(&img, rep.frames[rep.n / 4].w.robot[0].x / 65536.0,
+                                     rep.frames[rep.n / 4].w.robot[0].y / 65536.0),
+                         DUEL_RGB_TRAIL_WEST);
+        assert_int_equal(tr_count(&img, 0, 0, TR_SIZE, TR_SIZE, DUEL_RGB_TRAIL_EAST), 0);
+        free(img.rgb);
+        remove("trails.png");
+        /* names far too long for the row: each loses its start and they stay
+         * apart (a gap of the frame's colour in the middle of the row) */
+        {
+            static char lw[400], le[400];
+            memset(lw, 'w', sizeof lw - 1);
+            memset(le, 'e', sizeof le - 1);
+            lw[100] = le[50] = '/';
+            info.west = lw;
+            info.east = le;
+            duel_render_frame_info(&r, mid, 0, &info);
+            assert_int_equal(duel_render_write_png(&r, "trails.png", err, sizeof err), 0);
+            tr_read_png("trails.png", &img);
+            assert_true(tr_count(&img, 0, ly - 6, TR_SIZE / 2 - 10, ly + 6, DUEL_RGB_TEXT) > 300);
+            assert_true(tr_count(&img, TR_SIZE / 2 + 10, ly - 6, TR_SIZE, ly + 6, DUEL_RGB_TEXT) > 300);
+            assert_int_equal(tr_count(&img, TR_SIZE / 2 - 4, ly - 6, TR_SIZE / 2 + 4, ly + 6, DUEL_RGB_TEXT), 0);
+            free(img.rgb);
+            remove("trails.png");
+        }
+        duel_render_frame(&r, mid, DUEL_RENDER_TRAILS);
+        assert_int_equal(duel_render_write_png(&r, "trails.png", err, sizeof err), 0);
+        tr_read_png("trails.png", &img);
+        assert_int_equal(tr_count(&img, 0, 0, TR_SIZE, TR_SIZE, DUEL_RGB_TRAIL_WEST), 0);
+        assert_int_equal(tr_count(&img, 0, ly - 6, TR_SIZE, ly + 6, DUEL_RGB_TEXT), 0);
+        assert_int_equal(tr_count(&img, 0, TR_SIZE - TR_SIZE / 30, TR_SIZE, TR_SIZE, DUEL_RGB_TEXT_DIM), 0);
+        free(img.rgb);
+        remove("trails.png");
+    }
     duel_render_close(&r);
     duel_replay_free(&rep);
     assert_null(rep.frames);

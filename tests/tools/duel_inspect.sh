@@ -57,7 +57,25 @@ dot)
     "$duel" dot "$blob" > "$tmp/$net.dot"
     edges=$(grep -cE '^  n[0-9]+ -> n[0-9]+ \[penwidth' "$tmp/$net.dot" || true)
     [ "$edges" -eq "$conns" ] || fail "$net: $edges edges, expected $conns"
-    [ "$(grep -c 'style=dashed' "$tmp/$net.dot" || true)" -eq "$rec" ] || fail "$net: dashed edges != $rec recurrent"
+    [ "$(grep -E '^  n[0-9]+ -> ' "$tmp/$net.dot" | grep -c 'style=dashed' || true)" -eq "$rec" ] ||
+      fail "$net: dashed edges != $rec recurrent"
+    # the legend (the graph's label) and every hidden node in one rank=same row of its depth
+    grep -q 'label=<<TABLE' "$tmp/$net.dot" && grep -q 'positive weight' "$tmp/$net.dot" &&
+      grep -q 'dead hidden node' "$tmp/$net.dot" || fail "$net: no legend"
+    hidden=$("$duel" inspect "$blob" | sed -n 's/^hidden: \([0-9]*\)$/\1/p')
+    in_rows=$(awk '/^  subgraph depth[0-9]+_[0-9]+ \{$/ { on = 1; next } on && /^  \}$/ { on = 0 }
+                   on && /rank=same/ { rows++ } on && /shape=circle/ { n++ } END { print n + 0 }' "$tmp/$net.dot")
+    [ "$in_rows" -eq "$hidden" ] || fail "$net: $in_rows hidden nodes in depth rows, expected $hidden"
+    # --min-weight W: exactly the connections of |raw| >= W * 4096 (inspect's raw Q3.12 weights)
+    for w in 0.5 1 1.25; do
+      want=$("$duel" inspect "$blob" | awk -v w="$w" '/^conn / { r = $(NF - 0); for (i = 1; i <= NF; i++) if ($i == "raw") r = $(i + 1);
+             if (r < 0) r = -r; if (r >= w * 4096) n++ } END { print n + 0 }')
+      got=$("$duel" dot "$blob" --min-weight "$w" | grep -cE '^  n[0-9]+ -> n[0-9]+ \[penwidth' || true)
+      [ "$got" -eq "$want" ] || fail "$net: --min-weight $w drew $got edges, expected $want"
+      "$duel" dot "$blob" --min-weight "$w" > "$tmp/w.dot"
+      grep -qF "$want drawn, those of |w| &lt; $w left out" "$tmp/w.dot" ||
+        fail "$net: --min-weight $w: no count in the title"
+    done
     grep -q 'rank=source' "$tmp/$net.dot" && grep -q 'label="wall"' "$tmp/$net.dot" &&
       grep -q 'label="forward"' "$tmp/$net.dot" || fail "$net: ranks or labels missing"
     # -o writes the same bytes, through a temporary file that does not stay
@@ -98,6 +116,18 @@ generic)
   "$duel" dot "$tmp/g.blob" > "$tmp/g.dot"
   grep -q 'n3 \[label="in3", shape=box, color=gray70' "$tmp/g.dot" || fail "generic: unused input not faded"
   grep -q 'n5 -> n5 .*style=dashed' "$tmp/g.dot" || fail "generic: self loop not dashed"
+  grep -q 'n5 \[label="h5", shape=circle, width=0.3, fixedsize=false\];' "$tmp/g.dot" || fail "generic: h5 is not dead"
+  grep -q '1 hidden (0 dead)' "$tmp/g.dot" || fail "generic: dead count"
+  # in1 -> h5 made h5 -> h5: no input reaches h5 any more, so it is dead (grey dashed, its edges grey)
+  conns='\x00\x04\x00\x10\x02\x04\x00\xf8\x05\x04\x00\x20\x05\x05\x00\x08\x05\x05\x00\xf0'
+  printf "$head28$conns" > "$tmp/crc_input"
+  { printf "$head28"; gzip -c < "$tmp/crc_input" | tail -c 8 | head -c 4; printf "$conns"; } > "$tmp/d.blob"
+  "$duel" dot "$tmp/d.blob" > "$tmp/d.dot"
+  grep -q 'n5 \[label="h5", shape=circle, width=0.3, fixedsize=false, style=dashed, color=gray60' "$tmp/d.dot" ||
+    fail "dead: h5 not marked"
+  grep -q '1 hidden (1 dead)' "$tmp/d.dot" || fail "dead: count"
+  grep -q 'n5 -> n4 \[penwidth=1.12, color=gray60' "$tmp/d.dot" || fail "dead: its edge not grey"
+  grep -q 'n0 -> n4 \[penwidth=0.81, color=black' "$tmp/d.dot" || fail "dead: a live edge greyed"
   ;;
 bad-input)
   for cmd in inspect dot; do
@@ -116,6 +146,9 @@ bad-input)
   done
   expect_bad "usage: duel_evolve inspect BLOB" inspect --what
   expect_bad "dot: -o needs a file name" dot "$tmp/net39a.blob" -o
+  expect_bad "dot: --min-weight needs a value" dot "$tmp/net39a.blob" --min-weight
+  expect_bad "dot: --min-weight takes a number from 0 to 8, not '9'" dot "$tmp/net39a.blob" --min-weight 9
+  expect_bad "dot: --min-weight takes a number from 0 to 8, not 'nan'" dot "$tmp/net39a.blob" --min-weight nan
   expect_bad "nodir/x.dot: cannot write" dot "$tmp/net39a.blob" -o "$tmp/nodir/x.dot"
   ;;
 *)

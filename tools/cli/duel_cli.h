@@ -5,10 +5,18 @@
 
 #include <stdio.h>
 
+/* What the `dot` picture leaves out: connections whose |weight| is below
+ * min_weight (0: none left out). */
+typedef struct duel_dot_opts {
+    double min_weight;
+} duel_dot_opts;
+/* "--min-weight W" (0 <= W <= 8, the largest Q3.12 magnitude) into o. 0, or
+ * -1 after one line on stderr naming cmd. */
+int duel_dot_parse_min_weight(const char *cmd, const char *v, duel_dot_opts *o);
 /* The `dot` command's Graphviz picture of the champion blob at path, written
  * to f (tools/cli/duel_inspect.c). 0, or -1 after one line on stderr naming the
  * file and the problem (unreadable or invalid blob, out of memory). */
-int duel_dot_blob(FILE *f, const char *path);
+int duel_dot_blob(FILE *f, const char *path, const duel_dot_opts *o);
 /* `duel_evolve COMMAND --help` (duel_help.c): whether argv holds --help or
  * -h; COMMAND's synopsis and options on f (0, or -1: no such command). */
 int duel_help_wanted(int argc, char **argv);

@@ -111,9 +111,11 @@ static const duel_help_entry duel_help_entries[] = {
      "A champion blob's or genome file's nodes and connections (a genome file's genes too), or what a\n"
      "run's checkpoint holds (docs/tools.md, \"inspect\"). No options.\n"},
     {"dot",
-     "usage: duel_evolve dot BLOB|GENOME [-o FILE.dot]\n"
-     "The network as Graphviz (dot -Tpng FILE.dot -o FILE.png).\n"
-     "  -o FILE.dot              write to FILE.dot (atomically) instead of stdout\n"},
+     "usage: duel_evolve dot BLOB|GENOME [-o FILE.dot] [--min-weight W]\n"
+     "The network as Graphviz (dot -Tpng FILE.dot -o FILE.png): hidden nodes in rows by depth, dead\n"
+     "ones grey dashed, a legend at the bottom (docs/tools.md, \"dot\").\n"
+     "  -o FILE.dot              write to FILE.dot (atomically) instead of stdout\n"
+     "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"},
     {"render",
      "usage: duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [options]\n"
      "A duel's frames as PNG images (and a video), from an LCM log or from a game played now\n"
@@ -124,12 +126,14 @@ static const duel_help_entry duel_help_entries[] = {
      "  --size S                 S x S pixels, 64..2048 (default 600)\n"
      "  --every N                every Nth step's frame, and the last (default 1)\n"
      "  --sensors                draw the rangefinder sectors\n"
+     "  --trails                 draw the path each robot's centre has taken so far\n"
      "  --video FILE.mp4         encode the frames with ffmpeg\n"
      "  --fps F                  the video's frames per second, 1..120 (default 30)\n"},
     {"render-net",
-     "usage: duel_evolve render-net BLOB|GENOME --out FILE.png\n"
-     "The network drawn by Graphviz as a PNG (docs/render.md).\n"
-     "  --out FILE.png           the image to write (atomically)\n"},
+     "usage: duel_evolve render-net BLOB|GENOME --out FILE.png [--min-weight W]\n"
+     "The network drawn by Graphviz as a PNG, as the dot command draws it (docs/render.md).\n"
+     "  --out FILE.png           the image to write (atomically)\n"
+     "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"},
     {"export",
      "usage: duel_evolve export BLOB|GENOME --c-array NAME [-o FILE.c] [--header FILE.h]\n"
      "The champion as a C array for a firmware (docs/firmware.md).\n"

@@ -20,6 +20,7 @@ static const char *const duel_insp_inputs[DUEL_N_INPUTS] = {
 static const char *const duel_insp_outputs[DUEL_N_OUTPUTS] = {"turn_left", "turn_right", "forward"};
 
 #define DUEL_INSP_NAME 24 /* longest node name, with its terminator */
+#define DUEL_DOT_ROW 6     /* hidden nodes in a row of the drawing at most */
 
 /* A loaded blob and what both commands derive from it. */
 typedef struct duel_insp {
@@ -31,8 +32,15 @@ typedef struct duel_insp {
     nrt_net net;
     uint16_t *dst;       /* [n_conns] target node of each connection */
     uint8_t *recurrent;  /* [n_conns] 1 if the connection lies on a directed cycle */
-    uint8_t *upward;     /* [n_conns] 1 if it may set the drawing's ranks (dot only) */
     unsigned n_recurrent;
+    /* the drawing's layers (dot only): depth[v] of a hidden node is the
+     * longest path of feed-forward (not recurrent) connections from an
+     * input, at least 1; max_depth the largest */
+    int depth[NRT_MAX_NODES], max_depth;
+    /* dead[v]: a hidden node no input reaches or that reaches no output
+     * (what it computes never gets from the sensors to the motors) */
+    uint8_t dead[NRT_MAX_NODES];
+    unsigned n_dead;
     int duel_names;      /* 13 inputs and 3 outputs: the duel's sensor and motor names */
     uint32_t n_in[NRT_MAX_NODES], n_out[NRT_MAX_NODES]; /* connections into and out of each node */
 } duel_insp;
@@ -44,7 +52,7 @@ typedef struct duel_insp_scc {
     const uint32_t *first; /* [n_nodes + 1] outgoing connections of node v: by_src[first[v] .. first[v+1]) */
     const uint32_t *by_src;
     int index[NRT_MAX_NODES], low[NRT_MAX_NODES], comp[NRT_MAX_NODES];
-    uint8_t on_stack[NRT_MAX_NODES], seen[NRT_MAX_NODES];
+    uint8_t on_stack[NRT_MAX_NODES];
     uint16_t stack[NRT_MAX_NODES];
     int sp, next_index, n_comp;
 } duel_insp_scc;
@@ -76,30 +84,10 @@ static void duel_insp_scc_visit(duel_insp_scc *s, unsigned v)
     }
 }
 
-/* For the drawing's ranks: a DFS from the inputs in index order along the
- * connections that do not leave an output; those reaching back to a node
- * still on the DFS path are left out, so the rest form a DAG from inputs to
- * outputs (each such back edge is recurrent). */
-static void duel_insp_rank_visit(duel_insp_scc *s, unsigned v)
-{
-    duel_insp *x = s->x;
-    uint32_t e;
-    int is_output = v >= x->net.n_inputs && v < (unsigned)(x->net.n_inputs + x->net.n_outputs);
-    s->seen[v] = 1; /* on the path */
-    for (e = s->first[v]; e < s->first[v + 1] && !is_output; e++) {
-        uint32_t k = s->by_src[e];
-        unsigned w = x->dst[k];
-        x->upward[k] = s->seen[w] != 1;
-        if (s->seen[w] == 0)
-            duel_insp_rank_visit(s, w);
-    }
-    s->seen[v] = 2; /* done */
-}
-
 /* Marks the recurrent connections: source and target in one strongly
  * connected component, i.e. the target reaches the source again (a self
- * loop included). Independent of node or connection order. Also marks the
- * upward connections the drawing ranks by. Returns 0 or -1 (out of memory). */
+ * loop included). Independent of node or connection order. Returns 0 or -1
+ * (out of memory). */
 static int duel_insp_recurrence(duel_insp *x)
 {
     const nrt_net *n = &x->net;
@@ -131,9 +119,6 @@ static int duel_insp_recurrence(duel_insp *x)
     for (v = 0; v < n->n_nodes; v++)
         if (s->index[v] < 0)
             duel_insp_scc_visit(s, v);
-    for (v = 0; v < n->n_nodes; v++)
-        if (!s->seen[v])
-            duel_insp_rank_visit(s, v);
     x->n_recurrent = 0;
     for (k = 0; k < n->n_conns; k++) {
         x->recurrent[k] = s->comp[n->src[k]] == s->comp[x->dst[k]];
@@ -145,13 +130,65 @@ static int duel_insp_recurrence(duel_insp *x)
     return 0;
 }
 
+static int duel_insp_is_output(const duel_insp *x, unsigned v)
+{
+    return v >= x->net.n_inputs && v < (unsigned)(x->net.n_inputs + x->net.n_outputs);
+}
+
+/* Whether connection k sets the drawing's layers: a feed-forward one (not
+ * on a cycle) that does not leave an output (the outputs are the top layer
+ * whatever they feed back into). These form a DAG. */
+static int duel_insp_layering(const duel_insp *x, uint32_t k)
+{
+    return !x->recurrent[k] && !duel_insp_is_output(x, x->net.src[k]);
+}
+
+/* Depths and dead nodes (after duel_insp_recurrence). Relaxation over the
+ * connections rather than a topological sort: at most n_nodes rounds of a
+ * few hundred connections, and the same answer for any connection order. */
+static void duel_insp_layers(duel_insp *x)
+{
+    const nrt_net *n = &x->net;
+    uint8_t from_in[NRT_MAX_NODES], to_out[NRT_MAX_NODES];
+    unsigned v, round, n_io = (unsigned)(n->n_inputs + n->n_outputs);
+    uint32_t k;
+    int changed = 1;
+
+    for (v = 0; v < n->n_nodes; v++) {
+        x->depth[v] = v < n->n_inputs ? 0 : 1;
+        from_in[v] = v < n->n_inputs;
+        to_out[v] = duel_insp_is_output(x, v);
+    }
+    for (round = 0; changed && round <= n->n_nodes; round++) {
+        changed = 0;
+        for (k = 0; k < n->n_conns; k++) {
+            unsigned a = n->src[k], b = x->dst[k];
+            if (duel_insp_layering(x, k) && b >= n_io && x->depth[a] + 1 > x->depth[b]) {
+                x->depth[b] = x->depth[a] + 1;
+                changed = 1;
+            }
+            if (from_in[a] && !from_in[b])
+                from_in[b] = changed = 1;
+            if (to_out[b] && !to_out[a])
+                to_out[a] = changed = 1;
+        }
+    }
+    x->max_depth = 0;
+    x->n_dead = 0;
+    for (v = n_io; v < n->n_nodes; v++) {
+        if (x->depth[v] > x->max_depth)
+            x->max_depth = x->depth[v];
+        x->dead[v] = !from_in[v] || !to_out[v];
+        x->n_dead += x->dead[v];
+    }
+}
+
 static void duel_insp_free(duel_insp *x)
 {
     free(x->blob);
     free(x->mem);
     free(x->dst);
     free(x->recurrent);
-    free(x->upward);
     memset(x, 0, sizeof *x);
 }
 
@@ -180,8 +217,7 @@ static int duel_insp_open(duel_insp *x, const char *path)
     }
     x->dst = (uint16_t *)malloc((n->n_conns + 1u) * sizeof *x->dst);
     x->recurrent = (uint8_t *)malloc(n->n_conns + 1u);
-    x->upward = (uint8_t *)calloc(n->n_conns + 1u, 1);
-    if (x->dst == NULL || x->recurrent == NULL || x->upward == NULL) {
+    if (x->dst == NULL || x->recurrent == NULL) {
         fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
         duel_insp_free(x);
         return -1;
@@ -199,6 +235,7 @@ static int duel_insp_open(duel_insp *x, const char *path)
         duel_insp_free(x);
         return -1;
     }
+    duel_insp_layers(x);
     x->duel_names = n->n_inputs == DUEL_N_INPUTS && n->n_outputs == DUEL_N_OUTPUTS;
     return 0;
 }
@@ -361,41 +398,106 @@ int duel_cmd_inspect(int argc, char **argv)
 
 /* ---- dot ------------------------------------------------------------------ */
 
-/* s as the inside of a DOT string: quotes and backslashes escaped, control
- * characters replaced. */
-static void duel_dot_str(FILE *f, const char *s)
+/* s as text inside a Graphviz HTML-like label: &, <, >, " as entities,
+ * control characters replaced. */
+static void duel_dot_html(FILE *f, const char *s)
 {
     for (; *s != '\0'; s++) {
         unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\')
-            fputc('\\', f);
-        fputc(c < 0x20 || c == 0x7f ? '?' : c, f);
+        if (c == '&')
+            fputs("&amp;", f);
+        else if (c == '<')
+            fputs("&lt;", f);
+        else if (c == '>')
+            fputs("&gt;", f);
+        else if (c == '"')
+            fputs("&quot;", f);
+        else
+            fputc(c < 0x20 || c == 0x7f ? '?' : c, f);
     }
 }
 
-static void duel_dot_write(FILE *f, const duel_insp *x)
+/* Pen-width samples for the legend: bars 22 points long, h[i] high, in colour. */
+static void duel_dot_bars(FILE *f, const char *colour, const double *h, int n)
+{
+    int i;
+    fprintf(f, "<TD ALIGN=\"RIGHT\"><TABLE BORDER=\"0\" CELLSPACING=\"3\" CELLPADDING=\"0\"><TR>");
+    for (i = 0; i < n; i++)
+        fprintf(f, "<TD BGCOLOR=\"%s\" WIDTH=\"22\" HEIGHT=\"%.0f\" FIXEDSIZE=\"TRUE\"></TD>", colour,
+                h[i] < 1 ? 1 : h[i]);
+    fprintf(f, "</TR></TABLE></TD>");
+}
+
+/* The pen width of a connection of weight raw (Q3.12): 0.5 to 3 points. */
+static double duel_dot_pen(int raw)
+{
+    return 0.5 + 2.5 * (raw < 0 ? -raw : raw) / 4096.0 / 8.0;
+}
+
+/* Whether connection k is drawn: |w| >= min_weight (exact: raw / 4096 is a
+ * double without rounding). */
+static int duel_dot_shown(const duel_insp *x, uint32_t k, const duel_dot_opts *o)
+{
+    int raw = x->net.weight[k];
+    return (raw < 0 ? -raw : raw) / 4096.0 >= o->min_weight;
+}
+
+/* The title and the legend, as the graph's label at the bottom: what each
+ * colour, width, line and node style means, in the picture itself (four
+ * columns: sample, meaning, sample, meaning). */
+static void duel_dot_legend(FILE *f, const duel_insp *x, const duel_dot_opts *o, uint32_t n_shown)
+{
+    const nrt_net *n = &x->net;
+    const double two[1] = {2}, widths[3] = {duel_dot_pen(4096), duel_dot_pen(4 * 4096), duel_dot_pen(8 * 4096 - 1)};
+    fprintf(f, "  graph [labelloc=b, labeljust=c, label=<<TABLE BORDER=\"0\" CELLSPACING=\"1\" CELLPADDING=\"1\">\n"
+               "    <TR><TD COLSPAN=\"4\"><B>");
+    duel_dot_html(f, x->path);
+    fprintf(f, "</B>: %u inputs (bias included), %u outputs, %u hidden (%u dead), %u connections (%u recurrent)",
+            (unsigned)n->n_inputs, (unsigned)n->n_outputs, (unsigned)n->n_hidden, x->n_dead, (unsigned)n->n_conns,
+            x->n_recurrent);
+    if (o->min_weight > 0)
+        fprintf(f, "; %lu drawn, those of |w| &lt; %g left out", (unsigned long)n_shown, o->min_weight);
+    fprintf(f, "</TD></TR>\n    <TR>");
+    duel_dot_bars(f, "black", two, 1);
+    fprintf(f, "<TD ALIGN=\"LEFT\">positive weight</TD><TD ALIGN=\"RIGHT\">boxes:</TD>"
+               "<TD ALIGN=\"LEFT\">sensor inputs at the bottom (<FONT COLOR=\"gray55\">grey: unused</FONT>), motor "
+               "outputs at the top</TD></TR>\n    <TR>");
+    duel_dot_bars(f, "red", two, 1);
+    fprintf(f, "<TD ALIGN=\"LEFT\">negative weight</TD><TD ALIGN=\"RIGHT\">circles:</TD>"
+               "<TD ALIGN=\"LEFT\">hidden nodes in rows by depth (longest feed-forward path from an input), deeper "
+               "higher</TD></TR>\n    <TR>");
+    duel_dot_bars(f, "black", widths, 3);
+    fprintf(f, "<TD ALIGN=\"LEFT\">|w| = 1, 4, 8 (width 0.5 + 2.5 |w| / 8)</TD>"
+               "<TD ALIGN=\"RIGHT\"><FONT COLOR=\"gray55\">grey dashed:</FONT></TD>"
+               "<TD ALIGN=\"LEFT\">dead hidden node: no input reaches it, or it reaches no output</TD></TR>\n"
+               "    <TR><TD ALIGN=\"RIGHT\">- - - -</TD><TD ALIGN=\"LEFT\">recurrent (on a cycle)</TD>"
+               "<TD ALIGN=\"RIGHT\"><FONT COLOR=\"gray55\">grey lines:</FONT></TD>"
+               "<TD ALIGN=\"LEFT\">connections of a dead node</TD></TR>\n  </TABLE>>];\n");
+}
+
+static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
 {
     const nrt_net *n = &x->net;
     unsigned v, n_io = (unsigned)(n->n_inputs + n->n_outputs);
-    uint32_t k;
+    uint32_t k, n_shown = 0;
+    int d;
     char buf[DUEL_INSP_NAME];
 
+    for (k = 0; k < n->n_conns; k++)
+        n_shown += (uint32_t)duel_dot_shown(x, k, o);
     fprintf(f, "/* duel_evolve dot: a champion network (docs/tools.md) */\ndigraph champion {\n");
-    fprintf(f, "  rankdir=BT;\n  nodesep=0.2;\n  ranksep=0.6;\n");
-    fprintf(f, "  graph [labelloc=t, fontname=\"Helvetica\", fontsize=14, label=\"");
-    duel_dot_str(f, x->path);
-    fprintf(f, ": %u inputs (bias included), %u outputs, %u hidden, %u connections (%u recurrent)\\n"
-               "black: positive weight, red: negative; pen width 0.5 + 2.5 |w| / 8; "
-               "dashed: recurrent; grey: unused input\"];\n",
-            (unsigned)n->n_inputs, (unsigned)n->n_outputs, (unsigned)n->n_hidden, (unsigned)n->n_conns,
-            x->n_recurrent);
-    fprintf(f, "  node [fontname=\"Helvetica\", fontsize=10];\n  edge [arrowsize=0.6];\n");
+    /* at most 20 x 14 inches at 96 dpi (1920 x 1344 pixels): a large network is scaled down, not a poster */
+    fprintf(f, "  rankdir=BT;\n  nodesep=0.08;\n  ranksep=0.8;\n  dpi=96;\n  size=\"20,14\";\n");
+    /* boxes just round their names: 13 sensors side by side are the width of the picture */
+    fprintf(f, "  node [fontname=\"Helvetica\", fontsize=11, margin=\"0.04,0.02\", height=0.3];\n  edge [arrowsize=0.6];\n");
+    fprintf(f, "  graph [fontname=\"Helvetica\", fontsize=12];\n");
+    duel_dot_legend(f, x, o, n_shown);
 
     /* inputs in one rank at the bottom, in sensor order (invisible flat edges) */
     fprintf(f, "  subgraph inputs {\n    rank=source;\n");
     for (v = 0; v < n->n_inputs; v++)
         fprintf(f, "    n%u [label=\"%s\", shape=box%s];\n", v, duel_insp_name(x, v, buf),
-                x->n_out[v] == 0 ? ", color=gray70, fontcolor=gray70" : "");
+                x->n_out[v] == 0 ? ", color=gray70, fontcolor=gray55" : "");
     if (n->n_inputs > 1) {
         fprintf(f, "    ");
         for (v = 0; v < n->n_inputs; v++)
@@ -414,41 +516,87 @@ static void duel_dot_write(FILE *f, const duel_insp *x)
     }
     fprintf(f, "  }\n");
 
-    for (v = n_io; v < n->n_nodes; v++)
-        fprintf(f, "  n%u [label=\"%s\", shape=circle, width=0.3, fixedsize=false];\n", v,
-                duel_insp_name(x, v, buf));
+    /* hidden nodes, a rank per depth, the layers the legend names; a depth
+     * of many nodes in rows of DUEL_DOT_ROW stacked by invisible edges (one
+     * row of 20 makes a picture five times as wide as high) */
+    for (d = 1; d <= x->max_depth; d++) {
+        unsigned in_row = 0, row_first = 0;
+        for (v = n_io; v < n->n_nodes; v++) {
+            if (x->depth[v] != d)
+                continue;
+            if (in_row == DUEL_DOT_ROW) {
+                fprintf(f, "  }\n  n%u -> n%u [style=invis];\n", row_first, v);
+                in_row = 0;
+            }
+            if (in_row == 0) {
+                fprintf(f, "  subgraph depth%d_%u {\n    rank=same;\n", d, v);
+                row_first = v;
+            }
+            in_row++;
+            fprintf(f, "    n%u [label=\"%s\", shape=circle, width=0.3, fixedsize=false%s];\n", v,
+                    duel_insp_name(x, v, buf), x->dead[v] ? ", style=dashed, color=gray60, fontcolor=gray55" : "");
+        }
+        if (in_row > 0)
+            fprintf(f, "  }\n");
+    }
 
-    /* one edge per connection; only the upward ones (a DAG) set the ranks */
+    /* one edge per connection drawn; only the feed-forward ones (a DAG) set the ranks */
     for (k = 0; k < n->n_conns; k++) {
         int w = n->weight[k];
-        unsigned s = n->src[k];
-        int free_rank = !x->upward[k];
-        fprintf(f, "  n%u -> n%u [penwidth=%.2f, color=%s, tooltip=\"%.4f\"%s%s];\n", s, (unsigned)x->dst[k],
-                0.5 + 2.5 * (w < 0 ? -w : w) / 4096.0 / 8.0, w < 0 ? "red" : "black", w / 4096.0,
-                x->recurrent[k] ? ", style=dashed" : "", free_rank ? ", constraint=false" : "");
+        unsigned s = n->src[k], t = x->dst[k];
+        const char *colour = w < 0 ? "red" : "black";
+        if (!duel_dot_shown(x, k, o))
+            continue;
+        if (x->dead[s] || x->dead[t]) /* its signal never gets from a sensor to a motor */
+            colour = w < 0 ? "\"#f0a0a0\"" : "gray60";
+        fprintf(f, "  n%u -> n%u [penwidth=%.2f, color=%s, tooltip=\"%.4f\"%s%s];\n", s, t, duel_dot_pen(w), colour,
+                w / 4096.0, x->recurrent[k] ? ", style=dashed" : "",
+                duel_insp_layering(x, k) ? "" : ", constraint=false");
     }
     fprintf(f, "}\n");
 }
 
-int duel_dot_blob(FILE *f, const char *path)
+int duel_dot_parse_min_weight(const char *cmd, const char *v, duel_dot_opts *o)
+{
+    char *end;
+    double w;
+    errno = 0;
+    w = strtod(v, &end);
+    if (*v == '\0' || *end != '\0' || errno || !(w >= 0 && w <= 8)) { /* !(..) also refuses NaN */
+        fprintf(stderr, "duel_evolve: %s: --min-weight takes a number from 0 to 8, not '%s'\n", cmd, v);
+        return -1;
+    }
+    o->min_weight = w;
+    return 0;
+}
+
+int duel_dot_blob(FILE *f, const char *path, const duel_dot_opts *o)
 {
     duel_insp x;
     if (duel_insp_open(&x, path) != 0)
         return -1;
-    duel_dot_write(f, &x);
+    duel_dot_write(f, &x, o);
     duel_insp_free(&x);
     return 0;
 }
 
-/* duel_file_write_with's callback */
+/* duel_file_write_with's context and callback */
+typedef struct duel_dot_job {
+    const duel_insp *x;
+    const duel_dot_opts *o;
+} duel_dot_job;
+
 static void duel_dot_write_cb(FILE *f, const void *ctx)
 {
-    duel_dot_write(f, (const duel_insp *)ctx);
+    const duel_dot_job *j = (const duel_dot_job *)ctx;
+    duel_dot_write(f, j->x, j->o);
 }
 
 int duel_cmd_dot(int argc, char **argv)
 {
     duel_insp x;
+    duel_dot_opts o = {0};
+    duel_dot_job job;
     const char *blob = NULL, *out = NULL;
     int i, rc = 0;
 
@@ -459,23 +607,32 @@ int duel_cmd_dot(int argc, char **argv)
                 return 2;
             }
             out = argv[++i];
+        } else if (strcmp(argv[i], "--min-weight") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "duel_evolve: dot: --min-weight needs a value\n");
+                return 2;
+            }
+            if (duel_dot_parse_min_weight("dot", argv[++i], &o) != 0)
+                return 2;
         } else if (argv[i][0] == '-' || blob != NULL) {
-            fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot]\n");
+            fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot] [--min-weight W]\n");
             return 2;
         } else {
             blob = argv[i];
         }
     }
     if (blob == NULL) {
-        fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot]\n");
+        fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot] [--min-weight W]\n");
         return 2;
     }
     if (duel_insp_open(&x, blob) != 0)
         return 2;
+    job.x = &x;
+    job.o = &o;
     if (out != NULL) {
-        rc = duel_file_write_with(out, duel_dot_write_cb, &x);
+        rc = duel_file_write_with(out, duel_dot_write_cb, &job);
     } else {
-        duel_dot_write(stdout, &x); /* a failing stdout: duel_evolve.c says so */
+        duel_dot_write(stdout, &x, &o); /* a failing stdout: duel_evolve.c says so */
     }
     duel_insp_free(&x);
     return rc;

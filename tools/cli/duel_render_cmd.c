@@ -18,7 +18,7 @@
 
 static const char duel_render_usage_line[] =
     "usage: duel_evolve render (LOG.lcm | A B [--food K|training] [--side west|east]) --out DIR [--size 600] "
-    "[--every N] [--sensors] [--video FILE.mp4] [--fps 30]\n";
+    "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30]\n";
 
 /* "--opt N" with lo <= N <= hi. 0, or -1 after one line on stderr. */
 static int duel_rc_int(const char *cmd, const char *opt, const char *v, long lo, long hi, int *out)
@@ -195,6 +195,7 @@ int duel_cmd_render(int argc, char **argv)
     unsigned flags = 0, n_out = 0;
     duel_replay rep;
     duel_render ren;
+    duel_render_info info;
     size_t k;
     double t0, secs;
 
@@ -214,6 +215,10 @@ int duel_cmd_render(int argc, char **argv)
         }
         if (strcmp(opt, "--sensors") == 0) {
             flags |= DUEL_RENDER_SENSORS;
+            continue;
+        }
+        if (strcmp(opt, "--trails") == 0) {
+            flags |= DUEL_RENDER_TRAILS;
             continue;
         }
         if (i + 1 >= argc) {
@@ -310,11 +315,17 @@ int duel_cmd_render(int argc, char **argv)
     }
 
     /* frames 0, N, 2N, ... and always the last one (the final state) */
+    /* the legend names the controllers as the stdout line does */
+    info.west = rep.west;
+    info.east = rep.east;
+    info.food_config = rep.food_config;
+    info.trail = rep.frames;
     t0 = duel_rc_now();
     for (k = 0;; k += (size_t)every) {
         if (k > rep.n - 1)
             k = rep.n - 1;
-        duel_render_frame(&ren, &rep.frames[k], flags);
+        info.n_trail = k + 1;
+        duel_render_frame_info(&ren, &rep.frames[k], flags, &info);
         snprintf(path, sizeof path, "%s/frame-%05u.png", dir, n_out);
         if (duel_render_write_png(&ren, path, err, sizeof err) != 0) {
             fprintf(stderr, "duel_evolve: render: %s\n", err);
@@ -368,6 +379,7 @@ int duel_cmd_render_net(int argc, char **argv)
     char msg[512], *text = NULL, *dargv[6];
     size_t text_len = 0;
     FILE *f;
+    duel_dot_opts o = {0};
     int i, fd, st, rc = 0;
 
     for (i = 0; i < argc; i++) {
@@ -377,15 +389,22 @@ int duel_cmd_render_net(int argc, char **argv)
                 return 2;
             }
             out = argv[++i];
+        } else if (strcmp(argv[i], "--min-weight") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "duel_evolve: render-net: --min-weight needs a value\n");
+                return 2;
+            }
+            if (duel_dot_parse_min_weight("render-net", argv[++i], &o) != 0)
+                return 2;
         } else if (argv[i][0] == '-' || blob != NULL) {
-            fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png\n");
+            fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--min-weight W]\n");
             return 2;
         } else {
             blob = argv[i];
         }
     }
     if (blob == NULL || out == NULL) {
-        fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png\n");
+        fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--min-weight W]\n");
         return 2;
     }
     if (duel_exec_find("dot", dot, sizeof dot) != 0) {
@@ -402,7 +421,7 @@ int duel_cmd_render_net(int argc, char **argv)
         fprintf(stderr, "duel_evolve: render-net: out of memory\n");
         return 1;
     }
-    if (duel_dot_blob(f, blob) != 0) {
+    if (duel_dot_blob(f, blob, &o) != 0) {
         fclose(f);
         free(text);
         return 2;

@@ -41,7 +41,7 @@ def fig7(d, table):
     rand = rows(os.path.join(d, "fig7-random.csv"))
     test = {r["measure"]: r for r in rows(os.path.join(d, "fig7-test.csv"))}
     ref = table["reference"]
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
     for ax, key, label, rmin, rmax in ((axes[0], "mean_connections", "connections", "min_connections",
                                         "max_connections"),
                                        (axes[1], "mean_hidden", "hidden nodes", "min_hidden", "max_hidden")):
@@ -56,14 +56,17 @@ def fig7(d, table):
             ax.plot(rg, [float(r[rmax]) for r in rand], color="black", ls="--", lw=1,
                     label="random fitness: largest in the population")
         t = test["connections" if key == "mean_connections" else "hidden"]
-        ax.set_title("%s: first %.1f, final %.1f (Wilcoxon p = %.2g)" % (label.capitalize(), float(t["first_mean"]),
-                                                                         float(t["final_mean"]), float(t["p"])))
+        # two lines: side by side, one-line titles ran into each other at this width
+        ax.set_title("%s of the dominants\nfirst %.1f, final %.1f (first vs final: Wilcoxon p = %.2g)"
+                     % (label.capitalize(), float(t["first_mean"]), float(t["final_mean"]), float(t["p"])))
         ax.set_xlabel("generation")
+        ax.xaxis.get_major_locator().set_params(integer=True)  # no generation 0.25
         ax.set_ylabel("%s (count)" % label)
         ax.grid(alpha=0.3)
     handles, labels = axes[0].get_legend_handles_labels()
-    fig.legend(handles, labels, fontsize=8, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=3)
-    fig.suptitle("Figure 7: complexification of the dominant networks")
+    fig.legend(handles, labels, fontsize=9, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=2)
+    fig.suptitle("Figure 7: complexification of the dominant networks", fontsize=12)
+    fig.tight_layout()
     save(fig, d, "fig7-complexity")
 
 
@@ -78,9 +81,9 @@ def fig11(d, table):
                     label="mean (bars: sd) over every %s run" % table["reference"])
         games = data[0]["games"]
         ax.set_ylabel("extra games won of %s (wins - losses)" % games)
-        ax.legend(fontsize=8, loc="upper left")
+        ax.legend(fontsize=9, loc="upper left")
     ax.xaxis.get_major_locator().set_params(integer=True)
-    ax.set_xlabel("difference in dominance level")
+    ax.set_xlabel("difference in dominance level (higher level against lower)")
     ax.set_title("Figure 11: what a difference in dominance level means")
     ax.grid(alpha=0.3)
     save(fig, d, "fig11-levels")
@@ -114,15 +117,16 @@ def levels(d, table, method):
         ax.annotate("", xy=(int(b["generation"]), int(b["level"])), xytext=(int(a["generation"]), int(a["level"])),
                     arrowprops={"arrowstyle": "->", "color": "black", "lw": 1.5})
         ax.text(int(b["generation"]), int(b["level"]) + 0.3,
-                "equals level %s (generation %s)" % (b["level"], b["generation"]), fontsize=8)
+                "equals level %s (generation %s)" % (b["level"], b["generation"]), fontsize=9)
     ax.set_xlabel("generation")
-    ax.set_ylabel("dominance level")
-    ax2.set_ylabel("connections (count)")
+    ax.xaxis.get_major_locator().set_params(integer=True)
+    ax.set_ylabel("dominance level (bars)")
+    ax2.set_ylabel("connections of the level's network (dots)")
     ax.set_ylim(bottom=0)
     ax.yaxis.get_major_locator().set_params(integer=True)
     h1, l1 = ax.get_legend_handles_labels()
     h2, l2 = ax2.get_legend_handles_labels()
-    ax.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncol=2)
+    ax.legend(h1 + h2, l1 + l2, fontsize=9, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncol=2)
     ax.set_title("Typical runs: %s against %s (arrow: %s's best in %s's ranking)" % (method, ref, method, ref))
     ax.grid(alpha=0.3)
     save(fig, d, "levels-%s" % method)

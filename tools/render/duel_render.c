@@ -13,6 +13,7 @@
 #include <png.h>
 
 #include "duel_files.h"
+#include "duel_font.h"
 #include "duel_render.h"
 
 static const double duel_rd_pi = 3.14159265358979323846;
@@ -29,7 +30,7 @@ static duel_rd_layout duel_rd_layout_of(int size)
 {
     duel_rd_layout l;
     l.hud = size * 3 / 40;
-    l.m = size / 40;
+    l.m = size / 30;
     l.b = size - l.hud - l.m;
     l.ox = (size - l.b) / 2;
     return l;
@@ -129,31 +130,110 @@ static void duel_rd_stroke(double x0, double y0, double x1, double y1, double wd
     glEnd();
 }
 
-/* Seven-segment digits: bit 0 = top (a), then b (top right), c, d (bottom),
- * e, f (top left), g (middle). */
-static const uint8_t duel_rd_segments[10] = {0x3f, 0x06, 0x5b, 0x4f, 0x66, 0x6d, 0x7d, 0x07, 0x7f, 0x6f};
-
-static void duel_rd_digit(int d, double x, double y, double h)
+/* The font's dot at image side size: size / 400 rounded down to a half
+ * pixel (one sample of the 2 x 2), at least a half. */
+static double duel_rd_dot(int size)
 {
-    double w = 0.55 * h, th = 0.14 * h, m = y + h / 2;
-    unsigned s = duel_rd_segments[d];
-    if (s & 0x01) duel_rd_rect(x, y, x + w, y + th);
-    if (s & 0x02) duel_rd_rect(x + w - th, y, x + w, m + th / 2);
-    if (s & 0x04) duel_rd_rect(x + w - th, m - th / 2, x + w, y + h);
-    if (s & 0x08) duel_rd_rect(x, y + h - th, x + w, y + h);
-    if (s & 0x10) duel_rd_rect(x, m - th / 2, x + th, y + h);
-    if (s & 0x20) duel_rd_rect(x, y, x + th, m + th / 2);
-    if (s & 0x40) duel_rd_rect(x, m - th / 2, x + w, m + th / 2);
+    int halves = size / 200;
+    return (halves < 1 ? 1 : halves) * 0.5;
 }
 
-/* n in digits of height h, centred on (cx, cy). */
-static void duel_rd_number(unsigned n, double cx, double cy, double h)
+void duel_render_geom_of(int size, duel_render_geom *g)
 {
-    char s[16];
-    int len = snprintf(s, sizeof s, "%u", n), i;
-    double adv = 0.8 * h, w = adv * (len - 1) + 0.55 * h, x = cx - w / 2;
-    for (i = 0; i < len; i++)
-        duel_rd_digit(s[i] - '0', x + i * adv, cy - h / 2, h);
+    duel_rd_layout l = duel_rd_layout_of(size);
+    double dot = duel_rd_dot(size), adv = DUEL_FONT_ADV * dot, gap = 3 * dot, wide = 3 * adv, bar_h = 8 * dot;
+    /* the bar row across the board's width: bar, number, "step 750", number,
+     * bar; three characters between a number and the step, so they do not
+     * read as one line */
+    double num_w = 4 * adv, step_w = duel_render_text_width("step 750", dot);
+    double len = (l.b - step_w - 2 * num_w - 2 * gap - 2 * wide) / 2;
+    g->hud = l.hud;
+    g->m = l.m;
+    g->b = l.b;
+    g->ox = l.ox;
+    g->dot = dot;
+    g->legend_y = 0.30 * l.hud;
+    g->bar_y0 = 0.72 * l.hud - bar_h / 2;
+    g->bar_y1 = g->bar_y0 + bar_h;
+    g->bar_x0[DUEL_WEST] = l.ox;
+    g->bar_x1[DUEL_WEST] = l.ox + len;
+    g->num_x0[DUEL_WEST] = l.ox + len + gap;
+    g->num_x1[DUEL_WEST] = g->num_x0[DUEL_WEST] + num_w;
+    g->bar_x1[DUEL_EAST] = l.ox + l.b;
+    g->bar_x0[DUEL_EAST] = l.ox + l.b - len;
+    g->num_x1[DUEL_EAST] = l.ox + l.b - len - gap;
+    g->num_x0[DUEL_EAST] = g->num_x1[DUEL_EAST] - num_w;
+    g->bottom_y = l.hud + l.b + l.m / 2.0;
+}
+
+double duel_render_text_width(const char *s, double dot)
+{
+    size_t n = strlen(s);
+    return n == 0 ? 0 : ((double)n * DUEL_FONT_ADV - 1) * dot;
+}
+
+/* s with its top-left corner at (x, y), a rectangle per run of set dots. */
+static void duel_rd_text(const char *s, double x, double y, double dot)
+{
+    for (; *s != '\0'; s++, x += DUEL_FONT_ADV * dot) {
+        const uint8_t *g = duel_font_glyph(*s);
+        double gy = y + duel_font_drop(*s) * dot;
+        int row, col;
+        for (row = 0; row < DUEL_FONT_H; row++)
+            for (col = 0; col < DUEL_FONT_W; col++) {
+                int end = col;
+                if (!(g[row] >> (DUEL_FONT_W - 1 - col) & 1))
+                    continue;
+                while (end + 1 < DUEL_FONT_W && (g[row] >> (DUEL_FONT_W - 2 - end) & 1))
+                    end++;
+                duel_rd_rect(x + col * dot, gy + row * dot, x + (end + 1) * dot, gy + (row + 1) * dot);
+                col = end;
+            }
+    }
+}
+
+/* Text placed on the centre line cy: align < 0 starting at x, 0 centred
+ * on x, > 0 ending at x. */
+static void duel_rd_text_at(const char *s, double x, double cy, int align, double dot)
+{
+    double w = duel_render_text_width(s, dot), y = cy - DUEL_FONT_H * dot / 2;
+    duel_rd_text(s, align < 0 ? x : (align == 0 ? x - w / 2 : x - w), y, dot);
+}
+
+/* name shortened to at most max characters: its start replaced by an
+ * ellipsis, since a path's end (the file) says most; a path is cut at a
+ * '/' where that fits ("…/gen-00127.blob"). */
+static void duel_rd_fit(char *out, size_t out_len, const char *name, int max)
+{
+    size_t n = strlen(name), keep, at = 0, i;
+    if (max < 2)
+        max = 2;
+    if (n <= (size_t)max) {
+        snprintf(out, out_len, "%s", name);
+        return;
+    }
+    keep = (size_t)max - 1;
+    for (i = 0; i < n; i++)
+        if (name[i] == '/' && n - i <= keep) {
+            keep = n - i;
+            break;
+        }
+    if (keep + 2 > out_len)
+        keep = out_len - 2;
+    out[at++] = DUEL_FONT_ELLIPSIS;
+    memcpy(out + at, name + n - keep, keep);
+    out[at + keep] = '\0';
+}
+
+/* The shortest a name is shortened to before its last path component is
+ * cut: "…/BASENAME" for a path, else 8 characters. */
+static int duel_rd_short_len(const char *name)
+{
+    const char *slash = strrchr(name, '/');
+    int n = (int)strlen(name);
+    if (slash != NULL)
+        return 1 + (int)strlen(slash);
+    return n < 8 ? n : 8;
 }
 
 static double duel_rd_clamp01(double v)
@@ -163,27 +243,96 @@ static double duel_rd_clamp01(double v)
 
 /* One robot's energy bar: the frame, the empty bar, the fill in the robot's
  * colour growing from the outer end (west: left, east: right), a tick at the
- * start energy. Full scale: the start energy plus every food item. */
-static void duel_rd_energy_bar(const duel_rd_layout *l, int side, double energy, double full)
+ * start energy; its number beside it, on the inner side. Full scale: the
+ * start energy plus every food item. */
+static void duel_rd_energy_bar(const duel_render_geom *g, int side, double energy, double full)
 {
-    double len = 0.36 * l->b, h = 0.34 * l->hud, y0 = (l->hud - h) / 2, inset = 1.0;
-    double x0 = side == DUEL_WEST ? l->ox : l->ox + l->b - len, x1 = x0 + len;
+    double x0 = g->bar_x0[side], x1 = g->bar_x1[side], y0 = g->bar_y0, y1 = g->bar_y1, inset = 1.0;
     double in0 = x0 + inset, in1 = x1 - inset, fill = (in1 - in0) * duel_rd_clamp01(energy / full);
-    double tick = (in1 - in0) * DUEL_START_ENERGY / full;
+    double tick = (in1 - in0) * DUEL_START_ENERGY / full, cy = (y0 + y1) / 2;
+    char num[16];
     duel_rd_colour(DUEL_RGB_BAR_EDGE);
-    duel_rd_rect(x0, y0, x1, y0 + h);
+    duel_rd_rect(x0, y0, x1, y1);
     duel_rd_colour(DUEL_RGB_BAR_EMPTY);
-    duel_rd_rect(in0, y0 + inset, in1, y0 + h - inset);
+    duel_rd_rect(in0, y0 + inset, in1, y1 - inset);
     duel_rd_colour(side == DUEL_WEST ? DUEL_RGB_WEST : DUEL_RGB_EAST);
     if (side == DUEL_WEST)
-        duel_rd_rect(in0, y0 + inset, in0 + fill, y0 + h - inset);
+        duel_rd_rect(in0, y0 + inset, in0 + fill, y1 - inset);
     else
-        duel_rd_rect(in1 - fill, y0 + inset, in1, y0 + h - inset);
+        duel_rd_rect(in1 - fill, y0 + inset, in1, y1 - inset);
     duel_rd_colour(DUEL_RGB_TICK);
     if (side == DUEL_WEST)
-        duel_rd_rect(in0 + tick - 0.5, y0, in0 + tick + 0.5, y0 + h);
+        duel_rd_rect(in0 + tick - 0.5, y0, in0 + tick + 0.5, y1);
     else
-        duel_rd_rect(in1 - tick - 0.5, y0, in1 - tick + 0.5, y0 + h);
+        duel_rd_rect(in1 - tick - 0.5, y0, in1 - tick + 0.5, y1);
+    /* whole units, rounded down: 1200 at the start, 0 when empty */
+    snprintf(num, sizeof num, "%.0f", floor(energy < 0 ? 0 : energy));
+    duel_rd_colour(DUEL_RGB_TEXT);
+    if (side == DUEL_WEST)
+        duel_rd_text_at(num, g->num_x0[side], cy, -1, g->dot);
+    else
+        duel_rd_text_at(num, g->num_x1[side], cy, 1, g->dot);
+}
+
+/* The legend row: a disc in each side's colour, "west: NAME" from the
+ * left and "east: NAME" from the right; names that do not fit both lose
+ * their start, the longer one first. */
+static void duel_rd_legend(const duel_render_geom *g, const char *west, const char *east)
+{
+    double dot = g->dot, rad = 3.5 * dot, adv = DUEL_FONT_ADV * dot;
+    int room = (int)((g->b - 4 * rad - 6 * dot) / adv) - 2 * 6 - 3; /* "west: ", "east: ", three apart */
+    int nw = (int)strlen(west), ne = (int)strlen(east), mw = nw, me = ne;
+    char fit[300], line[320];
+    if (nw + ne > room) {
+        /* the longer loses first: cut to its file name if the other then fits whole */
+        int half = room / 2;
+        if (nw <= half || (ne >= nw && nw + duel_rd_short_len(east) <= room))
+            me = room - nw;
+        else if (ne <= half || nw + duel_rd_short_len(west) <= room)
+            mw = room - ne;
+        else
+            mw = me = half;
+    }
+    duel_rd_colour(DUEL_RGB_WEST);
+    duel_rd_disc(g->ox + rad, g->legend_y, rad);
+    duel_rd_colour(DUEL_RGB_EAST);
+    duel_rd_disc(g->ox + g->b - rad, g->legend_y, rad);
+    duel_rd_colour(DUEL_RGB_TEXT);
+    duel_rd_fit(fit, sizeof fit, west, mw);
+    snprintf(line, sizeof line, "west: %s", fit);
+    duel_rd_text_at(line, g->ox + 2 * rad + 3 * dot, g->legend_y, -1, dot);
+    duel_rd_fit(fit, sizeof fit, east, me);
+    snprintf(line, sizeof line, "east: %s", fit);
+    duel_rd_text_at(line, g->ox + g->b - 2 * rad - 3 * dot, g->legend_y, 1, dot);
+}
+
+/* Each robot's path so far: a stroke through its centres in frames
+ * 0..n-1, in its colour half way to the board's, under the robots. */
+static void duel_rd_trails(const duel_render *r, const duel_frame *trail, size_t n, double k)
+{
+    double wd = 0.25 * DUEL_RADIUS * k;
+    size_t i;
+    int side;
+    if (wd < 1)
+        wd = 1;
+    for (side = 0; side < 2; side++) {
+        duel_rd_colour(side == DUEL_WEST ? DUEL_RGB_TRAIL_WEST : DUEL_RGB_TRAIL_EAST);
+        for (i = 1; i < n; i++) {
+            const duel_robot *a = &trail[i - 1].w.robot[side], *b = &trail[i].w.robot[side];
+            double x0, y0, x1, y1, dx, dy, len;
+            duel_render_to_pixel(r->size, a->x / 65536.0, a->y / 65536.0, &x0, &y0);
+            duel_render_to_pixel(r->size, b->x / 65536.0, b->y / 65536.0, &x1, &y1);
+            dx = x1 - x0;
+            dy = y1 - y0;
+            len = sqrt(dx * dx + dy * dy);
+            if (len <= 0)
+                continue;
+            /* each piece reaches half the width past both ends: no notch at a turn */
+            dx *= wd / 2 / len;
+            dy *= wd / 2 / len;
+            duel_rd_stroke(x0 - dx, y0 - dy, x1 + dx, y1 + dy, wd);
+        }
+    }
 }
 
 static double duel_rd_heading(duel_angle a)
@@ -248,11 +397,18 @@ static void duel_rd_downsample(duel_render *r)
 
 void duel_render_frame(duel_render *r, const duel_frame *f, unsigned flags)
 {
+    duel_render_frame_info(r, f, flags, NULL);
+}
+
+void duel_render_frame_info(duel_render *r, const duel_frame *f, unsigned flags, const duel_render_info *info)
+{
     duel_rd_layout l = duel_rd_layout_of(r->size);
+    duel_render_geom g;
     int w = r->size * DUEL_RENDER_SS, side, i;
     double k = (double)l.b / DUEL_BOARD, full = DUEL_START_ENERGY + DUEL_FOOD_ENERGY * (double)f->w.n_food;
-    uint32_t digits = DUEL_RGB_DIGITS;
+    char line[96];
 
+    duel_render_geom_of(r->size, &g);
     glViewport(0, 0, w, w);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -271,6 +427,9 @@ void duel_render_frame(duel_render *r, const duel_frame *f, unsigned flags)
     duel_rd_rect(l.ox - 1, l.hud - 1, l.ox + l.b + 1, l.hud + l.b + 1);
     duel_rd_colour(DUEL_RGB_BOARD);
     duel_rd_rect(l.ox, l.hud, l.ox + l.b, l.hud + l.b);
+
+    if ((flags & DUEL_RENDER_TRAILS) && info != NULL && info->trail != NULL)
+        duel_rd_trails(r, info->trail, info->n_trail, k);
 
     duel_rd_colour(DUEL_RGB_FOOD);
     for (i = 0; i < f->w.n_food && i < DUEL_MAX_FOOD; i++)
@@ -293,14 +452,35 @@ void duel_render_frame(duel_render *r, const duel_frame *f, unsigned flags)
     for (side = 0; side < 2; side++)
         duel_rd_robot(r, &f->w.robot[side], side == DUEL_WEST ? DUEL_RGB_WEST : DUEL_RGB_EAST, k);
 
+    /* the top strip: legend, bars with their numbers, the step */
+    if (info != NULL && info->west != NULL && info->east != NULL)
+        duel_rd_legend(&g, info->west, info->east);
     for (side = 0; side < 2; side++)
-        duel_rd_energy_bar(&l, side, f->w.robot[side].energy / 65536.0, full);
-    if (f->ev.outcome == DUEL_WEST_WINS)
-        digits = DUEL_RGB_WEST;
-    else if (f->ev.outcome == DUEL_EAST_WINS)
-        digits = DUEL_RGB_EAST;
-    duel_rd_colour(digits);
-    duel_rd_number(f->t, r->size / 2.0, l.hud / 2.0, 0.5 * l.hud);
+        duel_rd_energy_bar(&g, side, f->w.robot[side].energy / 65536.0, full);
+    duel_rd_colour(DUEL_RGB_TEXT);
+    snprintf(line, sizeof line, "step %u", (unsigned)f->t);
+    duel_rd_text_at(line, r->size / 2.0, (g.bar_y0 + g.bar_y1) / 2, 0, g.dot);
+
+    /* the bottom strip: the outcome on the last frame (the winner's colour), the food before */
+    if (f->ev.outcome != DUEL_RUNNING) {
+        uint32_t c = f->ev.outcome == DUEL_WEST_WINS ? DUEL_RGB_WEST
+                     : f->ev.outcome == DUEL_EAST_WINS ? DUEL_RGB_EAST : DUEL_RGB_TEXT;
+        double tw, rad = 3.5 * g.dot;
+        snprintf(line, sizeof line, "%s after %u steps", duel_outcome_text(f->ev.outcome), (unsigned)f->t);
+        tw = duel_render_text_width(line, g.dot);
+        /* light text on the dark strip, the winner's colour as a disc before it (blue text would be dim) */
+        duel_rd_colour(c);
+        duel_rd_disc(r->size / 2.0 - tw / 2 - 4 * g.dot - rad, g.bottom_y, rad);
+        duel_rd_colour(DUEL_RGB_TEXT);
+        duel_rd_text_at(line, r->size / 2.0, g.bottom_y, 0, g.dot);
+    } else if (info != NULL && info->food_config != DUEL_RENDER_NO_FOOD) {
+        if (info->food_config == DUEL_TRAINING)
+            snprintf(line, sizeof line, "training food");
+        else
+            snprintf(line, sizeof line, "food configuration %d", info->food_config);
+        duel_rd_colour(DUEL_RGB_TEXT_DIM);
+        duel_rd_text_at(line, g.ox, g.bottom_y, -1, g.dot);
+    }
 
     glFinish();
     duel_rd_downsample(r);
