@@ -231,12 +231,13 @@ set_tests_properties(tools/neat_bench_help PROPERTIES PASS_REGULAR_EXPRESSION " 
 # (scripts/doc_figures.py BUILD --write puts the measured ones in place)
 if(NOT NEAT_SANITIZE AND NOT NEAT_FUZZ)
   add_test(NAME docs/figures COMMAND ${DUEL_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/doc_figures.py ${PROJECT_BINARY_DIR})
-  set_tests_properties(docs/figures PROPERTIES SKIP_RETURN_CODE 77 RUN_SERIAL TRUE)
+  set_tests_properties(docs/figures PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 
 # every command block of README.md, run as written in order (long jobs smaller: tests/docs/readme_commands.sh)
 if(NOT NEAT_SANITIZE AND NOT NEAT_FUZZ)
   add_test(NAME docs/readme_commands
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/readme_commands.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
-  set_tests_properties(docs/readme_commands PROPERTIES RUN_SERIAL TRUE)
+  # the longest test (about 150 s): started first, beside the others
+  set_tests_properties(docs/readme_commands PROPERTIES COST 1000)
 endif()

@@ -7,7 +7,7 @@ readme=$(realpath "${3:-$src/README.md}")
 work=$(mktemp -d)
 cleanup() {
   # whatever a block left running in the background (LCM's hub)
-  pkill -f "lcm.lcm.TCPService 77" 2> /dev/null || true
+  pkill -f "lcm.lcm.TCPService 7700$" 2> /dev/null || true
   rm -rf "$work"
 }
 trap cleanup EXIT
@@ -25,7 +25,8 @@ ln -s "$build" "$work/build"
 # - the set-up: its main job, configs/quick.ini into runs/quick (as scripts/setup.sh runs it), small
 #   populations and few opponents, every generation kept (later commands name its champions);
 #   the test suite: not run (this test is part of it)
-# - run: the same small populations and opponents, the generations as written
+# - run: the same small populations and opponents, the generations as written (20 when no later command
+#   names the run's champions)
 # - experiment: the same, and 3 generations
 # - mpirun: as root, allowed; on this machine (oversubscribed, shared memory and loopback); a hostfile's
 #   cluster command is not run
@@ -43,7 +44,12 @@ reduce() { # reduce COMMAND: prints the command to run, or nothing to skip it
   *"duel_evolve run "* | *"duel_evolve resume "*) c="$c --quiet" ;;
   esac
   case "$c" in
-  *"duel_evolve run "*) c="$c $small" ;;
+  *"duel_evolve run "*)
+    c="$c $small"
+    # a run whose champions no later command names: 20 generations
+    local out
+    out=$(printf '%s\n' "$c" | sed -n 's/.*--out \([^ ]*\).*/\1/p')
+    grep -qF "$out/champions/" "$work/.commands" || c="$c --generations 20" ;;
   *"duel_evolve experiment configs/"*) c="$c --quiet $small --set generations=3" ;;
   "bench/coev_bench.sh"*) c="bench/coev_bench.sh build 2" ;;
   "bench/duel_instructions.sh"*) c="bench/duel_instructions.sh build 2" ;;
