@@ -30,8 +30,8 @@ static int duel_controller_ok(const duel_controller *c)
  * activation buffers). Apart from duel_play, so that the untraced games,
  * and the firmware, do not carry the copies on their stack (and kept out
  * of line for that: inlined, its locals would join duel_play's frame). */
-DUEL_NOINLINE static void duel_traced_step(duel_world *w, nrt_q15 *const in[2], const nrt_q15 *const out[2], int food_near,
-                             duel_trace_fn trace, void *ud)
+DUEL_NOINLINE static void duel_traced_step(duel_world *w, nrt_q15 *const in[2], const nrt_q15 *const out[2],
+                                           int food_near, duel_trace_fn trace, void *ud)
 {
     duel_world before = *w;
     nrt_q15 in_copy[2][DUEL_N_INPUTS], out_copy[2][DUEL_N_OUTPUTS];

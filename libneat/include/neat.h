@@ -35,6 +35,7 @@ extern "C" {
 #define NEAT_VERSION_MINOR NEAT_DUEL_VERSION_MINOR
 #define NEAT_CHECKPOINT_VERSION 2 /* checkpoint format, apart from the code */
 #define NEAT_GENOME_FILE_VERSION 1 /* genome file format (neat_genome_save) */
+#define NEAT_GENOME_FILE_MAGIC "NEATGENM" /* its first 8 bytes */
 
 /* the export attribute of the shared libraries (empty in static and firmware builds) */
 #ifndef NEAT_API

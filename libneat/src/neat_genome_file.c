@@ -4,8 +4,6 @@
 #include "neat_io.h"
 #include "nrt.h"
 
-static const uint8_t neat_genome_magic[8] = {'N', 'E', 'A', 'T', 'G', 'E', 'N', 'M'};
-
 int neat_genome_save(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t **buf, size_t *len,
                      const neat_alloc *a)
 {
@@ -14,7 +12,7 @@ int neat_genome_save(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs
         return NEAT_E_ARG;
     memset(&w, 0, sizeof w);
     w.a = a;
-    neat_put(&w, neat_genome_magic, 8);
+    neat_put(&w, NEAT_GENOME_FILE_MAGIC, 8); /* neat.h: 8 bytes, no terminator */
     neat_put_u32(&w, NEAT_GENOME_FILE_VERSION);
     neat_put_u32(&w, n_inputs);
     neat_put_u32(&w, n_outputs);
@@ -33,7 +31,7 @@ int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, co
     memset(&r, 0, sizeof r);
     r.p = buf;
     r.n = len;
-    neat_get_frame(&r, neat_genome_magic, NEAT_GENOME_FILE_VERSION);
+    neat_get_frame(&r, (const uint8_t *)NEAT_GENOME_FILE_MAGIC, NEAT_GENOME_FILE_VERSION);
     /* the shape first: neat_get_genome checks the genome against it (bias,
      * inputs and outputs present, at most NRT_MAX_NODES nodes) */
     p = neat_params_default();

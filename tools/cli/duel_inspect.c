@@ -277,21 +277,26 @@ static uint32_t duel_insp_rd32(const uint8_t *p)
 
 /* ---- inspect ------------------------------------------------------------ */
 
+/* Whether the file at path starts with these 8 bytes (what kind of file inspect was given). */
+static int duel_starts_with(const char *path, const char magic[8])
+{
+    char head[8];
+    FILE *f = fopen(path, "rb");
+    int yes;
+    if (f == NULL)
+        return 0;
+    yes = fread(head, 1, 8, f) == 8 && memcmp(head, magic, 8) == 0;
+    fclose(f);
+    return yes;
+}
+
 /* A run directory, or a file that starts like a coevolution checkpoint. */
 static int duel_is_checkpoint(const char *path)
 {
     struct stat st;
-    char magic[8];
-    FILE *f;
-    int yes;
     if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
         return 1;
-    f = fopen(path, "rb");
-    if (f == NULL)
-        return 0;
-    yes = fread(magic, 1, 8, f) == 8 && memcmp(magic, "NEATCOEV", 8) == 0;
-    fclose(f);
-    return yes;
+    return duel_starts_with(path, "NEATCOEV");
 }
 
 /* A genome file's own content, before its network's: the shape, every
@@ -336,19 +341,6 @@ static int duel_inspect_genome(const char *path)
     return 0;
 }
 
-/* whether the file at path starts as a genome file does */
-static int duel_is_genome_path(const char *path)
-{
-    uint8_t magic[8];
-    FILE *f = fopen(path, "rb");
-    int yes;
-    if (f == NULL)
-        return 0;
-    yes = fread(magic, 1, 8, f) == 8 && duel_is_genome_file(magic, 8);
-    fclose(f);
-    return yes;
-}
-
 int duel_cmd_inspect(int argc, char **argv)
 {
     duel_insp x;
@@ -363,7 +355,7 @@ int duel_cmd_inspect(int argc, char **argv)
     }
     if (duel_is_checkpoint(argv[0]))
         return duel_inspect_run(argv[0]);
-    if (duel_is_genome_path(argv[0]) && duel_inspect_genome(argv[0]) != 0)
+    if (duel_starts_with(argv[0], NEAT_GENOME_FILE_MAGIC) && duel_inspect_genome(argv[0]) != 0)
         return 2;
     if (duel_insp_open(&x, argv[0]) != 0)
         return 2;

@@ -28,7 +28,6 @@
 /* Set by SIGINT/SIGTERM: the generation in progress finishes and is saved. */
 static volatile sig_atomic_t duel_stop = 0;
 
-
 typedef struct duel_run {
     const char *dir;
     duel_config cfg;

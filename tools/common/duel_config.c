@@ -8,6 +8,7 @@
 #include "neat_config.h"
 #include "neat_ini.h"
 #include "duel_files.h"
+#include "duel_genome_file.h"
 
 #define RUN_KEY(name, type, lo, hi) {#name, type, offsetof(duel_config, name), lo, hi, NULL}
 #define COEV_KEY(name, lo, hi) {#name, NEAT_CFG_U32, offsetof(neat_coev_params, name), lo, hi, NULL}
@@ -124,20 +125,16 @@ int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t 
         e = neat_genome_recurrent_hidden(g, p->n_inputs, p->n_outputs, cfg->start.hidden, cfg->start.direct, NULL);
     else if (cfg->start.kind == DUEL_START_GENOME) {
         uint32_t ni, no;
-        size_t off = 0;
-        if (duel_file_read(cfg->start.path, 64u << 20, &blob, &len) != 0) {
+        if (duel_file_read(cfg->start.path, DUEL_GENOME_MAX, &blob, &len) != 0) {
             snprintf(err, err_len, "%s: cannot read the start genome: %s", cfg->start.path,
                      errno == EFBIG ? "larger than 64 MB" : strerror(errno));
             return -1;
         }
-        e = neat_genome_load(g, &ni, &no, blob, len, NULL, &off);
+        e = duel_genome_parse(cfg->start.path, blob, len, g, &ni, &no, err, err_len);
         free(blob);
-        if (e == NEAT_E_FORMAT || e == NEAT_E_CRC || e == NEAT_E_TRUNCATED) {
-            snprintf(err, err_len, "%s: not a valid genome file: %s at byte %lu", cfg->start.path, neat_strerror(e),
-                     (unsigned long)off);
+        if (e != 0)
             return -1;
-        }
-        if (!e && (ni != p->n_inputs || no != p->n_outputs)) {
+        if (ni != p->n_inputs || no != p->n_outputs) {
             snprintf(err, err_len, "%s: a genome of %u inputs and %u outputs, not the duel's %u and %u",
                      cfg->start.path, ni, no, p->n_inputs, p->n_outputs);
             neat_genome_free(g, NULL);

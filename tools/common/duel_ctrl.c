@@ -9,60 +9,6 @@
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
 
-/* A genome file (neat_genome_save) holds 21 bytes a connection gene: far
- * more than a blob could, but not without bound. */
-#define DUEL_GENOME_MAX (64u << 20)
-
-int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs)
-{
-    uint8_t *buf = NULL;
-    size_t len = 0;
-    int r = duel_file_read(path, DUEL_GENOME_MAX, &buf, &len);
-    neat_genome_init(g);
-    if (r != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", path, r == -1 ? "open" : "read",
-                errno == EFBIG ? "larger than 64 MB" : strerror(errno));
-        return -1;
-    }
-    return duel_genome_parse(path, buf, len, g, n_inputs, n_outputs, 1);
-}
-
-int duel_genome_parse(const char *path, uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
-                      uint32_t *n_outputs, int free_buf)
-{
-    size_t off = 0;
-    int err = neat_genome_load(g, n_inputs, n_outputs, buf, len, NULL, &off);
-    if (free_buf)
-        free(buf);
-    if (err) {
-        fprintf(stderr, "duel_evolve: %s: not a valid genome file: %s at byte %lu\n", path, neat_strerror(err),
-                (unsigned long)off);
-        return -1;
-    }
-    return 0;
-}
-
-int duel_is_genome_file(const uint8_t *buf, size_t len)
-{
-    return len >= 8 && memcmp(buf, "NEATGENM", 8) == 0;
-}
-
-int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs)
-{
-    uint8_t *buf = NULL;
-    size_t len = 0;
-    int err = neat_genome_save(g, n_inputs, n_outputs, &buf, &len, NULL), r;
-    if (err) {
-        fprintf(stderr, "duel_evolve: %s: cannot encode the genome: %s\n", path, neat_strerror(err));
-        return -1;
-    }
-    r = duel_file_replace(path, buf, len);
-    if (r != 0)
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
-    free(buf);
-    return r;
-}
-
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
 {
     int r = duel_file_read(path, DUEL_GENOME_MAX, blob, len);
@@ -71,8 +17,12 @@ int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
         neat_genome g;
         uint32_t ni, no;
         uint8_t *file = *blob;
+        char err[4400];
         *blob = NULL;
-        if (duel_genome_parse(path, file, *len, &g, &ni, &no, 1) != 0) {
+        r = duel_genome_parse(path, file, *len, &g, &ni, &no, err, sizeof err);
+        free(file);
+        if (r != 0) {
+            fprintf(stderr, "duel_evolve: %s\n", err);
             *len = 0;
             return -1;
         }

@@ -6,7 +6,7 @@
 #include <stdint.h>
 
 #include "duel.h"
-#include "neat.h"
+#include "duel_genome_file.h"
 
 /* A controller named on the command line: a blob or genome file, or builtin:NAME. */
 typedef struct duel_cli_ctrl {
@@ -17,19 +17,6 @@ typedef struct duel_cli_ctrl {
     size_t blob_len;
     char name[256];
 } duel_cli_ctrl;
-
-/* A genome file (neat_genome_save: magic NEATGENM) read into g (the caller
- * frees it) with its shape; on error prints one line naming the file, the
- * problem and its byte offset, and returns -1 (g empty). */
-int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs);
-/* The same from len bytes already read from path (freed when free_buf). */
-int duel_genome_parse(const char *path, uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
-                      uint32_t *n_outputs, int free_buf);
-/* Whether buf starts as a genome file does. */
-int duel_is_genome_file(const uint8_t *buf, size_t len);
-/* g as a genome file at path, written atomically (temporary file, rename);
- * on error prints one line and returns -1. */
-int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs);
 
 /* Reads the whole file at path into a malloc'd *blob (the caller frees it)
  * of *len bytes, not validated (a genome file gives its network's blob); on

@@ -1,0 +1,61 @@
+/* duel_genome_file.c - champion genome files as the tools read, check and write them, every error one line naming the file and the byte. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "duel_files.h"
+#include "duel_genome_file.h"
+
+int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs)
+{
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    char err[4400];
+    int r = duel_file_read(path, DUEL_GENOME_MAX, &buf, &len);
+    neat_genome_init(g);
+    if (r != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", path, r == -1 ? "open" : "read",
+                errno == EFBIG ? "larger than 64 MB" : strerror(errno));
+        return -1;
+    }
+    r = duel_genome_parse(path, buf, len, g, n_inputs, n_outputs, err, sizeof err);
+    free(buf);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s\n", err);
+    return r;
+}
+
+int duel_genome_parse(const char *path, const uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
+                      uint32_t *n_outputs, char *err, size_t err_len)
+{
+    size_t off = 0;
+    int e = neat_genome_load(g, n_inputs, n_outputs, buf, len, NULL, &off);
+    if (e == NEAT_E_NOMEM)
+        snprintf(err, err_len, "%s: cannot load the genome: %s", path, neat_strerror(e));
+    else if (e)
+        snprintf(err, err_len, "%s: not a valid genome file: %s at byte %lu", path, neat_strerror(e),
+                 (unsigned long)off);
+    return e ? -1 : 0;
+}
+
+int duel_is_genome_file(const uint8_t *buf, size_t len)
+{
+    return len >= 8 && memcmp(buf, NEAT_GENOME_FILE_MAGIC, 8) == 0;
+}
+
+int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs)
+{
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    int err = neat_genome_save(g, n_inputs, n_outputs, &buf, &len, NULL), r;
+    if (err) {
+        fprintf(stderr, "duel_evolve: %s: cannot encode the genome: %s\n", path, neat_strerror(err));
+        return -1;
+    }
+    r = duel_file_replace(path, buf, len);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    free(buf);
+    return r;
+}

@@ -1,0 +1,28 @@
+/* duel_genome_file.h - champion genome files (neat_genome_save's format) as the tools read, check and write them. */
+#ifndef DUEL_GENOME_FILE_H
+#define DUEL_GENOME_FILE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "neat.h"
+
+/* A genome file (neat_genome_save) holds 21 bytes a connection gene: far
+ * more than a blob could, but not without bound. */
+#define DUEL_GENOME_MAX ((size_t)64 << 20)
+
+/* A genome file (neat_genome_save: magic NEAT_GENOME_FILE_MAGIC) read into
+ * g (the caller frees it) with its shape; on error prints one line naming
+ * the file, the problem and its byte offset, and returns -1 (g empty). */
+int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs);
+/* The same from len bytes already read from path: 0, or -1 with the line
+ * (without "duel_evolve: ") in err. */
+int duel_genome_parse(const char *path, const uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
+                      uint32_t *n_outputs, char *err, size_t err_len);
+/* Whether buf starts as a genome file does. */
+int duel_is_genome_file(const uint8_t *buf, size_t len);
+/* g as a genome file at path, written atomically (temporary file, rename);
+ * on error prints one line and returns -1. */
+int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs);
+
+#endif /* DUEL_GENOME_FILE_H */
