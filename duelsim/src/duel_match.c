@@ -96,9 +96,12 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         if (duel_sense_both(&w, &lanes, in[DUEL_WEST], in[DUEL_EAST]) != 0)
             for (side = 0; side < 2; side++)
                 duel_sense(&w, side, in[side]);
+        if (dense[DUEL_WEST] != NULL && dense[DUEL_EAST] != NULL)
+            nrt_dense_step2(dense[DUEL_WEST], dense[DUEL_EAST]);
         for (side = 0; side < 2; side++)
             if (dense[side] != NULL) {
-                nrt_dense_step(dense[side]);
+                if (dense[side ^ 1] == NULL)
+                    nrt_dense_step(dense[side]);
                 out[side] = nrt_dense_outputs(dense[side]);
             } else {
                 out[side] = duel_act(side == DUEL_WEST ? west : east, in[side], out_buf[side]);

@@ -62,6 +62,11 @@ static inline const nrt_q15 *nrt_dense_outputs(const nrt_dense *d)
  * the network d was made from in that state. */
 NRT_API void nrt_dense_step(nrt_dense *d);
 
+/* Two networks' steps at once, exactly nrt_dense_step(d0) then
+ * nrt_dense_step(d1) (two different forms): when both have at most four
+ * rows (outputs + hidden), their sigmoids share one pass of eight. */
+NRT_API void nrt_dense_step2(nrt_dense *d0, nrt_dense *d1);
+
 /* d's state into net (the network d was made from): net then holds what
  * nrt_step would have left in it. */
 NRT_API void nrt_dense_save(const nrt_dense *d, nrt_net *net);

@@ -124,6 +124,24 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
  * sigmoids at once. */
 #define NRT_DENSE_FEW 4
 
+/* The sums of a network of at most NRT_DENSE_FEW rows, for the activations
+ * in v: lanes 0-3 the rows' his, 4-7 their los (rows past the last zero). */
+NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few(const nrt_dense *d, const __m256i *v,
+                                                                           uint32_t blocks)
+{
+    __m256i x[8];
+    const nrt_w12 *row = d->w;
+    uint32_t r;
+    /* x[r]: row r's hi, x[4 + r] its lo */
+    for (r = 0; r < NRT_DENSE_FEW; r++, row += 16u * blocks) {
+        if (r < d->rows)
+            NRT_DENSE_ROW(row, v, blocks, x[r], x[4 + r]);
+        else
+            x[r] = x[4 + r] = _mm256_setzero_si256();
+    }
+    return nrt_dense_sum8(x);
+}
+
 /* The rows' new activations into next[]: a[] holds the step's activations
  * padded to whole blocks (zeros at first, then whatever the group stores
  * below left there: the padding columns' weights are 0 in every row, so
@@ -140,15 +158,7 @@ NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const 
     for (b = 0; b < blocks; b++)
         v[b] = _mm256_loadu_si256((const __m256i *)(const void *)(a + 16u * b));
     if (rows <= NRT_DENSE_FEW) {
-        __m256i s;
-        /* x[r]: row r's hi, x[4 + r] its lo; rows past the last are zero */
-        for (r = 0; r < NRT_DENSE_FEW; r++, row += 16u * blocks) {
-            if (r < rows)
-                NRT_DENSE_ROW(row, v, blocks, hi[r], hi[4 + r]);
-            else
-                hi[r] = hi[4 + r] = _mm256_setzero_si256();
-        }
-        s = nrt_dense_sum8(hi); /* lanes 0-3: the rows' hi, 4-7: their lo */
+        __m256i s = nrt_dense_few(d, v, blocks);
         _mm_storel_epi64((__m128i *)(void *)next, nrt_dense_sig8(s, _mm256_permute4x64_epi64(s, 0x4E)));
         return;
     }
@@ -181,6 +191,43 @@ NRT_AVX2 void nrt_dense_step(nrt_dense *d)
     d->cur ^= 1u;
 }
 
+/* nrt_dense_few for d's current activations, its block count a constant
+ * in each case */
+NRT_AVX2 static __m256i nrt_dense_few_sums(const nrt_dense *d)
+{
+    const nrt_q15 *a = d->act[d->cur];
+    __m256i v[NRT_DENSE_MAX_NODES / 16];
+    uint32_t b;
+    for (b = 0; b < d->blocks; b++)
+        v[b] = _mm256_loadu_si256((const __m256i *)(const void *)(a + 16u * b));
+    switch (d->blocks) {
+    case 1: return nrt_dense_few(d, v, 1);
+    case 2: return nrt_dense_few(d, v, 2);
+    case 3: return nrt_dense_few(d, v, 3);
+    default: return nrt_dense_few(d, v, 4);
+    }
+}
+
+NRT_AVX2 void nrt_dense_step2(nrt_dense *d0, nrt_dense *d1)
+{
+    __m256i s0, s1;
+    __m128i out;
+    if (d0->rows > NRT_DENSE_FEW || d1->rows > NRT_DENSE_FEW) {
+        nrt_dense_step(d0);
+        nrt_dense_step(d1);
+        return;
+    }
+    /* both small: one sigmoid of eight for the two networks' rows, d0's
+     * his and los in lanes 0-3, d1's in 4-7 */
+    s0 = nrt_dense_few_sums(d0);
+    s1 = nrt_dense_few_sums(d1);
+    out = nrt_dense_sig8(_mm256_permute2x128_si256(s0, s1, 0x20), _mm256_permute2x128_si256(s0, s1, 0x31));
+    _mm_storel_epi64((__m128i *)(void *)(d0->act[d0->cur ^ 1u] + d0->n_inputs), out);
+    _mm_storel_epi64((__m128i *)(void *)(d1->act[d1->cur ^ 1u] + d1->n_inputs), _mm_unpackhi_epi64(out, out));
+    d0->cur ^= 1u;
+    d1->cur ^= 1u;
+}
+
 #else /* no dense step on this processor or compiler */
 
 int nrt_dense_make(nrt_dense *d, const nrt_net *net)
@@ -193,6 +240,12 @@ int nrt_dense_make(nrt_dense *d, const nrt_net *net)
 void nrt_dense_step(nrt_dense *d)
 {
     (void)d;
+}
+
+void nrt_dense_step2(nrt_dense *d0, nrt_dense *d1)
+{
+    (void)d0;
+    (void)d1;
 }
 
 void nrt_dense_save(const nrt_dense *d, nrt_net *net)

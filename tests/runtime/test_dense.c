@@ -137,6 +137,68 @@ static void test_dense_matches_step(void **state)
     test_free(b);
 }
 
+/* nrt_dense_step2 on 300 random pairs, most of them small enough (at most
+ * four rows each) to share the sigmoid pass, the rest mixed: after every
+ * step both networks' activations are nrt_step's. */
+static void test_dense_pair_matches_step(void **state)
+{
+    static nrt_dense d[2];
+    td_net *a[2], *b[2];
+    uint32_t seed = 0x9E3779B9u, trial, made = 0, shared = 0, k;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        a[k] = test_malloc(sizeof *a[k]);
+        b[k] = test_malloc(sizeof *b[k]);
+    }
+    if (!td_available()) {
+        for (k = 0; k < 2; k++) {
+            test_free(a[k]);
+            test_free(b[k]);
+        }
+        skip();
+    }
+    for (trial = 0; trial < 300; trial++) {
+        int ok = 1;
+        uint32_t step, i;
+        for (k = 0; k < 2; k++) {
+            uint32_t n_in = 1 + td_next(&seed) % 20, n_out = 1 + td_next(&seed) % 4;
+            uint32_t room = trial % 4 == 3 ? NRT_DENSE_MAX_NODES - n_in - n_out : 4 - n_out;
+            uint32_t n_hid = td_next(&seed) % (room + 1), density = 3 + td_next(&seed) % 6, s1 = seed, s2 = seed;
+            td_make(a[k], n_in, n_out, n_hid, density, &s1);
+            td_make(b[k], n_in, n_out, n_hid, density, &s2);
+            seed = s1;
+            ok = ok && nrt_dense_make(&d[k], &b[k]->net) == NRT_OK;
+        }
+        if (!ok)
+            continue;
+        made++;
+        shared += d[0].rows <= 4 && d[1].rows <= 4;
+        for (step = 0; step < 12; step++) {
+            for (k = 0; k < 2; k++) {
+                nrt_q15 *ia = nrt_inputs(&a[k]->net), *ib = nrt_dense_inputs(&d[k]);
+                for (i = 0; i < a[k]->net.n_inputs; i++)
+                    ia[i] = ib[i] = td_value(&seed, -32768);
+                nrt_step(&a[k]->net, ia, NULL);
+            }
+            nrt_dense_step2(&d[0], &d[1]);
+            for (k = 0; k < 2; k++) {
+                assert_memory_equal(nrt_outputs(&a[k]->net), nrt_dense_outputs(&d[k]), 2u * a[k]->net.n_outputs);
+                nrt_dense_save(&d[k], &b[k]->net);
+                assert_int_equal(a[k]->net.cur, b[k]->net.cur);
+                assert_memory_equal(a[k]->net.act[a[k]->net.cur], b[k]->net.act[b[k]->net.cur],
+                                    2u * a[k]->net.n_nodes);
+            }
+        }
+    }
+    /* both ways: the shared pass, and a pair with a larger network */
+    assert_true(made >= 150);
+    assert_true(shared >= 100 && made - shared >= 20);
+    for (k = 0; k < 2; k++) {
+        test_free(a[k]);
+        test_free(b[k]);
+    }
+}
+
 /* The largest sums there are: every weight 32767 or -32767 from every node,
  * every activation -32768 or 32767, in one 64-node network. */
 static void test_dense_extremes(void **state)
@@ -243,6 +305,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_dense_matches_step),
+        cmocka_unit_test(test_dense_pair_matches_step),
         cmocka_unit_test(test_dense_extremes),
         cmocka_unit_test(test_dense_sigmoid_sweep),
         cmocka_unit_test(test_dense_refuses),

@@ -35,11 +35,25 @@ struct duel_games {
     uint64_t batch_steps;
 };
 
-/* One worker's two networks, reloaded only when the player changes. */
+/* A network a worker has loaded, and what it was loaded from. */
 typedef struct duel_seat {
     neat_phenotype ph;
     const void *key; /* the genome, or the duel_net */
 } duel_seat;
+
+/* Opponents a worker keeps loaded: a generation's hosts all meet the same
+ * few (4 species champions and 8 of the Hall of Fame in configs/paper.ini),
+ * so each is loaded about once per worker and batch rather than once per
+ * host (perf: the loads' checksums were 2 % of a paper-scale generation). */
+#define DUEL_KEPT 16u
+
+/* One worker's networks: the host (a), and the opponents (b) it has met,
+ * reloaded only when a player is not among them. Per batch: a key is a
+ * pointer, which a later batch may reuse for another network. */
+typedef struct duel_seats {
+    duel_seat host, kept[DUEL_KEPT];
+    uint32_t next; /* the kept seat to load into next, round robin */
+} duel_seats;
 
 static int duel_seat_load(duel_seat *s, const duel_games *dg, const void *key)
 {
@@ -58,9 +72,24 @@ static int duel_seat_load(duel_seat *s, const duel_games *dg, const void *key)
     return err;
 }
 
-/* Game i of the batch: its two players, its food, a's side; its result set. */
-static int duel_play_one(duel_games *dg, duel_seat seat[2], size_t i, uint32_t *steps)
+/* The kept seat holding key, loaded into the next one if none does. */
+static duel_seat *duel_seat_kept(duel_seats *ss, const duel_games *dg, const void *key, int *err)
 {
+    duel_seat *s;
+    uint32_t k;
+    for (k = 0; k < DUEL_KEPT; k++)
+        if (ss->kept[k].key == key)
+            return &ss->kept[k];
+    s = &ss->kept[ss->next];
+    ss->next = (ss->next + 1u) % DUEL_KEPT;
+    *err = duel_seat_load(s, dg, key);
+    return s;
+}
+
+/* Game i of the batch: its two players, its food, a's side; its result set. */
+static int duel_play_one(duel_games *dg, duel_seats *ss, size_t i, uint32_t *steps)
+{
+    duel_seat *opp;
     duel_controller west, east;
     duel_result res;
     const void *a, *b;
@@ -78,15 +107,16 @@ static int duel_play_one(duel_games *dg, duel_seat seat[2], size_t i, uint32_t *
         config = dg->matches[i].config;
         a_first = dg->matches[i].a_first;
     }
-    err = duel_seat_load(&seat[0], dg, a);
-    if (!err)
-        err = duel_seat_load(&seat[1], dg, b);
+    err = duel_seat_load(&ss->host, dg, a);
+    if (err)
+        return err;
+    opp = duel_seat_kept(ss, dg, b, &err);
     if (err)
         return err;
     memset(&west, 0, sizeof west);
     memset(&east, 0, sizeof east);
-    west.net = a_first ? &seat[0].ph.net : &seat[1].ph.net;
-    east.net = a_first ? &seat[1].ph.net : &seat[0].ph.net;
+    west.net = a_first ? &ss->host.ph.net : &opp->ph.net;
+    east.net = a_first ? &opp->ph.net : &ss->host.ph.net;
     err = duel_play(&west, &east, config < 0 ? DUEL_TRAINING : config, &res, NULL, NULL);
     if (err)
         return err - 200;
@@ -117,13 +147,22 @@ static void duel_fail_locked(duel_games *dg, size_t at, int err)
 static void *duel_worker(void *arg)
 {
     duel_games *dg = (duel_games *)arg;
-    duel_seat seat[2];
+    duel_seats *ss = (duel_seats *)malloc(sizeof *ss);
     uint64_t steps = 0;
-    int k;
-    for (k = 0; k < 2; k++) {
-        neat_phenotype_init(&seat[k].ph, NULL);
-        seat[k].key = NULL;
+    uint32_t k;
+    if (ss == NULL) {
+        pthread_mutex_lock(&dg->lock);
+        duel_fail_locked(dg, dg->next, NEAT_E_NOMEM);
+        pthread_mutex_unlock(&dg->lock);
+        return NULL;
     }
+    neat_phenotype_init(&ss->host.ph, NULL);
+    ss->host.key = NULL;
+    for (k = 0; k < DUEL_KEPT; k++) {
+        neat_phenotype_init(&ss->kept[k].ph, NULL);
+        ss->kept[k].key = NULL;
+    }
+    ss->next = 0;
     for (;;) {
         size_t i, from, to;
         pthread_mutex_lock(&dg->lock);
@@ -137,7 +176,7 @@ static void *duel_worker(void *arg)
             break;
         for (i = from; i < to; i++) {
             uint32_t s = 0;
-            int err = duel_play_one(dg, seat, i, &s);
+            int err = duel_play_one(dg, ss, i, &s);
             steps += s;
             if (err) {
                 pthread_mutex_lock(&dg->lock);
@@ -151,8 +190,10 @@ static void *duel_worker(void *arg)
         pthread_cond_signal(&dg->moved);
         pthread_mutex_unlock(&dg->lock);
     }
-    for (k = 0; k < 2; k++)
-        neat_phenotype_free(&seat[k].ph);
+    neat_phenotype_free(&ss->host.ph);
+    for (k = 0; k < DUEL_KEPT; k++)
+        neat_phenotype_free(&ss->kept[k].ph);
+    free(ss);
     return NULL;
 }
 
