@@ -52,24 +52,23 @@ DUEL_AVX2 static __m256i duel_round30(__m256i x)
         _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(q, _mm256_set_epi32(7, 5, 3, 1, 6, 4, 2, 0))));
 }
 
-/* Both robots' frames (duel_frame_of) and their boundaries in lanes (west,
- * east, west, east): the eight products of each robot four at a time. */
-DUEL_AVX2 static void duel_frames_of(const duel_world *w, duel_frame f[2], __m256i bx[5], __m256i by[5])
+/* Both robots' frames (duel_frame_of) as their boundaries in lanes (west,
+ * east, west, east): the eight products of each robot four at a time; the
+ * headings' cos and sin into c[2], s[2]. */
+DUEL_AVX2 static void duel_frames_of(const duel_world *w, int32_t c[2], int32_t s[2], __m256i bx[5], __m256i by[5])
 {
-    __m256i c, sn, kc, ks, cc, ss, cs, sc, lo_x, lo_y, hi_x, hi_y;
-    int64_t out[4][4];
-    int side;
-    duel_cossin_q30(w->robot[DUEL_WEST].heading, &f[0].c, &f[0].s);
-    duel_cossin_q30(w->robot[DUEL_EAST].heading, &f[1].c, &f[1].s);
-    c = duel_lanes_of(f[0].c, f[1].c);
-    sn = duel_lanes_of(f[0].s, f[1].s);
+    __m256i vc, vs, kc, ks, cc, ss, cs, sc, lo_x, lo_y, hi_x, hi_y;
+    duel_cossin_q30(w->robot[DUEL_WEST].heading, &c[0], &s[0]);
+    duel_cossin_q30(w->robot[DUEL_EAST].heading, &c[1], &s[1]);
+    vc = duel_lanes_of(c[0], c[1]);
+    vs = duel_lanes_of(s[0], s[1]);
     /* lanes (west, east) for boundary pair 0/4, then for pair 1/3 */
     kc = _mm256_set_epi64x(duel_bcos[1], duel_bcos[1], duel_bcos[0], duel_bcos[0]);
     ks = _mm256_set_epi64x(duel_bsin[1], duel_bsin[1], duel_bsin[0], duel_bsin[0]);
-    cc = _mm256_mul_epi32(c, kc);
-    ss = _mm256_mul_epi32(sn, ks);
-    cs = _mm256_mul_epi32(c, ks);
-    sc = _mm256_mul_epi32(sn, kc);
+    cc = _mm256_mul_epi32(vc, kc);
+    ss = _mm256_mul_epi32(vs, ks);
+    cs = _mm256_mul_epi32(vc, ks);
+    sc = _mm256_mul_epi32(vs, kc);
     lo_x = duel_round30(_mm256_sub_epi64(cc, ss)); /* bx[0] (west, east), bx[1] (west, east) */
     lo_y = duel_round30(_mm256_add_epi64(cs, sc));
     hi_x = duel_round30(_mm256_add_epi64(cc, ss)); /* bx[4], bx[3] */
@@ -82,24 +81,26 @@ DUEL_AVX2 static void duel_frames_of(const duel_world *w, duel_frame f[2], __m25
     by[1] = _mm256_permute4x64_epi64(lo_y, 0xEE);
     by[4] = _mm256_permute4x64_epi64(hi_y, 0x44);
     by[3] = _mm256_permute4x64_epi64(hi_y, 0xEE);
-    bx[2] = _mm256_sub_epi64(_mm256_setzero_si256(), c);
-    by[2] = _mm256_sub_epi64(_mm256_setzero_si256(), sn);
-    _mm256_storeu_si256((__m256i *)(void *)out[0], lo_x);
-    _mm256_storeu_si256((__m256i *)(void *)out[1], lo_y);
-    _mm256_storeu_si256((__m256i *)(void *)out[2], hi_x);
-    _mm256_storeu_si256((__m256i *)(void *)out[3], hi_y);
-    for (side = 0; side < 2; side++) {
-        f[side].bx[0] = out[0][side];
-        f[side].bx[1] = out[0][2 + side];
-        f[side].bx[4] = out[2][side];
-        f[side].bx[3] = out[2][2 + side];
-        f[side].by[0] = out[1][side];
-        f[side].by[1] = out[1][2 + side];
-        f[side].by[4] = out[3][side];
-        f[side].by[3] = out[3][2 + side];
-        f[side].bx[2] = -f[side].c;
-        f[side].by[2] = -f[side].s;
-    }
+    bx[2] = _mm256_sub_epi64(_mm256_setzero_si256(), vc);
+    by[2] = _mm256_sub_epi64(_mm256_setzero_si256(), vs);
+}
+
+/* The sector masks of the vectors (vx, vy) in lanes: m[k] all ones where
+ * the vector lies in sector k. With the boundaries 72 degrees apart in
+ * angular order, "not clockwise of boundary k-1, clockwise of boundary k"
+ * is duel_sector's tree for every non-zero v (a bearing on boundary k-1
+ * belongs to sector k, on the ray opposite it to no neighbour of it); v = 0
+ * gets no sector. */
+DUEL_AVX2 static inline __attribute__((always_inline)) void duel_sectors4(__m256i vx, __m256i vy, const __m256i bx[5],
+                                                                         const __m256i by[5], __m256i m[5])
+{
+    __m256i s[5];
+    int k;
+    /* s[k]: v clockwise of boundary k, bx * vy < by * vx (duel_sector) */
+    for (k = 0; k < 5; k++)
+        s[k] = _mm256_cmpgt_epi64(_mm256_mul_epi32(by[k], vx), _mm256_mul_epi32(bx[k], vy));
+    for (k = 0; k < 5; k++)
+        m[k] = _mm256_andnot_si256(s[(k + 4) % 5], s[k]);
 }
 
 /* the items of w->food_mask in pairs, an odd last one twice */
@@ -170,17 +171,8 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
         __m256i vy = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->y[p]), ry);
         __m256i d2 = _mm256_add_epi64(_mm256_mul_epi32(vx, vx), _mm256_mul_epi32(vy, vy));
         __m256i key = _mm256_add_epi64(d2, flip);
-        __m256i s[5], m[5];
-        /* s[k]: v clockwise of boundary k, bx * vy < by * vx (duel_sector) */
-        for (k = 0; k < 5; k++)
-            s[k] = _mm256_cmpgt_epi64(_mm256_mul_epi32(by[k], vx), _mm256_mul_epi32(bx[k], vy));
-        /* Sector k: not clockwise of boundary k-1, clockwise of boundary k.
-         * With the boundaries 72 degrees apart in angular order this is
-         * duel_sector's tree for every non-zero v (a bearing on boundary k-1
-         * belongs to sector k, on the ray opposite it to no neighbour of
-         * it); v = 0 gets no sector, and its key never wins anyway. */
-        for (k = 0; k < 5; k++)
-            m[k] = _mm256_andnot_si256(s[(k + 4) % 5], s[k]);
+        __m256i m[5];
+        duel_sectors4(vx, vy, bx, by, m);
         for (k = 0; k < 5; k++) {
             __m256i better = _mm256_and_si256(m[k], _mm256_cmpgt_epi64(best[k], key));
             best[k] = _mm256_blendv_epi8(best[k], key, better);
@@ -203,30 +195,42 @@ DUEL_AVX2 static void duel_sense_both_avx2(const duel_world *w, duel_lanes *lane
                                            nrt_q15 east[DUEL_N_INPUTS])
 {
     const duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
-    int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy, rd[12];
-    nrt_q15 *in[2];
-    duel_frame f[2];
-    __m256i bx[5], by[5];
+    int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy, rd[12], sec[4];
+    int32_t c[2], s[2];
+    nrt_q15 *in[2], energy;
+    __m256i bx[5], by[5], m[5], rx, ry;
     int side, k;
     if (lanes->mask != w->food_mask)
         duel_lanes_make(lanes, w);
-    duel_frames_of(w, f, bx, by);
+    duel_frames_of(w, c, s, bx, by);
     duel_scan_pair(w, lanes, bx, by, d2, rd);
+    /* the robot rangefinders' sector: the other robot is at (vx, vy) from
+     * west, at (-vx, -vy) from east; the sector's number from the masks,
+     * -(m[1] + 2 m[2] + 3 m[3] + 4 m[4]) (a mask is -1), none when v = 0 */
+    rx = _mm256_set_epi64x(-vx, vx, -vx, vx);
+    ry = _mm256_set_epi64x(-vy, vy, -vy, vy);
+    duel_sectors4(rx, ry, bx, by, m);
+    m[1] = _mm256_add_epi64(m[1], m[3]);                                /* A = m1 + m3 */
+    m[2] = _mm256_add_epi64(m[2], m[3]);                                /* B = m2 + m3 */
+    m[4] = _mm256_add_epi64(m[2], _mm256_add_epi64(m[4], m[4]));        /* B + 2 m4 */
+    /* -(A + 2 (B + 2 m4)) = -(m1 + 2 m2 + 3 m3 + 4 m4) */
+    _mm256_storeu_si256((__m256i *)(void *)sec,
+                        _mm256_sub_epi64(_mm256_setzero_si256(), _mm256_add_epi64(m[1], _mm256_add_epi64(m[4], m[4]))));
     in[0] = west;
     in[1] = east;
+    /* the two robots read exact opposites (duel_energy_reading) */
+    energy = duel_energy_reading(a->energy, b->energy);
     for (side = 0; side < 2; side++) {
         /* duel_sense_finish with the readings taken above */
-        const duel_robot *me = &w->robot[side], *other = &w->robot[side ^ 1];
         nrt_q15 *v = in[side];
         v[0] = NRT_ONE;
         for (k = 0; k < 5; k++)
             v[1 + k] = (nrt_q15)rd[2 * k + side];
         v[6] = v[7] = v[8] = v[9] = v[10] = 0;
-        /* the other robot is at (vx, vy) from west, at (-vx, -vy) from east */
         if (d2 != 0)
-            v[6 + duel_sector(side == 0 ? vx : -vx, side == 0 ? vy : -vy, f[side].bx, f[side].by)] = (nrt_q15)rd[10];
-        v[11] = duel_energy_reading(me->energy, other->energy);
-        v[12] = duel_wall_reading(me, f[side].c, f[side].s);
+            v[6 + sec[side]] = (nrt_q15)rd[10];
+        v[11] = side == 0 ? energy : (nrt_q15)-energy;
+        v[12] = duel_wall_reading(&w->robot[side], c[side], s[side]);
     }
 }
 
