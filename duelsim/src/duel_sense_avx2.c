@@ -125,13 +125,18 @@ static void duel_lanes_make(duel_lanes *l, const duel_world *w)
 }
 
 /* duel_range_reading of four squared distances given as keys (d2 - 1 with
- * the top bit flipped; INT64_MAX: none, reading 0). floor(sqrt(d2)) comes
- * from the double-precision square root of d2 (exact in a double: d2 <
- * 2^52 on the board), then is corrected to the exact floor by two integer
- * checks, whatever the rounding; n = floor(sqrt(d2)) / 850 by a multiply
- * (2^40 / 850 rounded up, exact below 2^26), the reading 32768 - (n + 1) / 2
- * at most 32767: duel_range_reading's value (floor(sqrt(floor(d2 / 722500)))
- * = floor(floor(sqrt(d2)) / 850), 722500 = 850^2). */
+ * the top bit flipped; INT64_MAX: none, reading 0). r = floor(sqrt(d2)) is
+ * the truncated double-precision square root of d2, exactly: d2 < 2^52 on
+ * the board (offsets below 2^26 / sqrt 2) is exact in a double, and for
+ * an integer k <= 2^26 every d2 < k^2 has sqrt(d2) <= sqrt(k^2 - 1) <
+ * k - 1/(2k), more than half a unit in the last place (at most 2^-28
+ * there) below k, so the correctly rounded root stays below k; every d2 >=
+ * k^2 has a root, and so a rounded root, of at least k. Then n = r / 850
+ * by a multiply (2^40 / 850 rounded up, exact below 2^26), the reading
+ * 32768 - (n + 1) / 2 at most 32767: duel_range_reading's value
+ * (floor(sqrt(floor(d2 / 722500))) = floor(floor(sqrt(d2)) / 850), 722500 =
+ * 850^2). tests/duelsim/test_golden.c compares it with duel_sense at every
+ * distance where a reading steps. */
 DUEL_AVX2 static __m256i duel_readings4(__m256i key)
 {
     const __m256i none = _mm256_cmpeq_epi64(key, _mm256_set1_epi64x(INT64_MAX));
@@ -139,13 +144,8 @@ DUEL_AVX2 static __m256i duel_readings4(__m256i key)
     __m256i d2 = _mm256_sub_epi64(key, _mm256_set1_epi64x(INT64_MAX));
     __m256d x = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(d2, two52)), _mm256_castsi256_pd(two52));
     __m256i r = _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(_mm256_sqrt_pd(x)));
-    __m256i r1, n, v;
-    /* r * r > d2: one less; (r + 1)^2 <= d2: one more */
-    r = _mm256_add_epi64(r, _mm256_cmpgt_epi64(_mm256_mul_epi32(r, r), d2));
-    r1 = _mm256_add_epi64(r, one);
-    r = _mm256_sub_epi64(r, _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_mul_epi32(r1, r1), d2), _mm256_set1_epi64x(-1)));
-    n = _mm256_srli_epi64(_mm256_mul_epu32(r, _mm256_set1_epi64x(1293543092)), 40);
-    v = _mm256_sub_epi64(_mm256_set1_epi64x(32768), _mm256_srli_epi64(_mm256_add_epi64(n, one), 1));
+    __m256i n = _mm256_srli_epi64(_mm256_mul_epu32(r, _mm256_set1_epi64x(1293543092)), 40);
+    __m256i v = _mm256_sub_epi64(_mm256_set1_epi64x(32768), _mm256_srli_epi64(_mm256_add_epi64(n, one), 1));
     v = _mm256_add_epi64(v, _mm256_cmpgt_epi64(v, _mm256_set1_epi64x(32767)));
     return _mm256_andnot_si256(none, v);
 }
