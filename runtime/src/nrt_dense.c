@@ -132,13 +132,11 @@ NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few(cons
     __m256i x[8];
     const nrt_w12 *row = d->w;
     uint32_t r;
-    /* x[r]: row r's hi, x[4 + r] its lo */
-    for (r = 0; r < NRT_DENSE_FEW; r++, row += 16u * blocks) {
-        if (r < d->rows)
-            NRT_DENSE_ROW(row, v, blocks, x[r], x[4 + r]);
-        else
-            x[r] = x[4 + r] = _mm256_setzero_si256();
-    }
+    /* x[r]: row r's hi, x[4 + r] its lo; the rows past the last are in the
+     * matrix (a whole group of eight), all zero, and sum to zero: cheaper
+     * to add up than to branch around */
+    for (r = 0; r < NRT_DENSE_FEW; r++, row += 16u * blocks)
+        NRT_DENSE_ROW(row, v, blocks, x[r], x[4 + r]);
     return nrt_dense_sum8(x);
 }
 
@@ -193,7 +191,7 @@ NRT_AVX2 void nrt_dense_step(nrt_dense *d)
 
 /* nrt_dense_few for d's current activations, its block count a constant
  * in each case */
-NRT_AVX2 static __m256i nrt_dense_few_sums(const nrt_dense *d)
+NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few_sums(const nrt_dense *d)
 {
     const nrt_q15 *a = d->act[d->cur];
     __m256i v[NRT_DENSE_MAX_NODES / 16];
