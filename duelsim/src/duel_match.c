@@ -56,6 +56,7 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     duel_lanes lanes;
     nrt_dense *dense[2] = {NULL, NULL};
     nrt_dense dense_of[2];
+    int pair;
 #endif
     int err, side;
 
@@ -82,6 +83,9 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         if (east->net != NULL && nrt_dense_make(&dense_of[DUEL_EAST], east->net) == NRT_OK)
             dense[DUEL_EAST] = &dense_of[DUEL_EAST];
     }
+    /* two small networks step together (nrt_dense_step2) */
+    pair = dense[DUEL_WEST] != NULL && dense[DUEL_EAST] != NULL && dense[DUEL_WEST]->rows <= NRT_DENSE_FEW &&
+           dense[DUEL_EAST]->rows <= NRT_DENSE_FEW;
 #endif
     while (w.outcome == DUEL_RUNNING) {
         /* 1. both sense the state at t; 2. both networks propagate once */
@@ -96,11 +100,11 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         if (duel_sense_both(&w, &lanes, in[DUEL_WEST], in[DUEL_EAST]) != 0)
             for (side = 0; side < 2; side++)
                 duel_sense(&w, side, in[side]);
-        if (dense[DUEL_WEST] != NULL && dense[DUEL_EAST] != NULL)
+        if (pair)
             nrt_dense_step2(dense[DUEL_WEST], dense[DUEL_EAST]);
         for (side = 0; side < 2; side++)
             if (dense[side] != NULL) {
-                if (dense[side ^ 1] == NULL)
+                if (!pair)
                     nrt_dense_step(dense[side]);
                 out[side] = nrt_dense_outputs(dense[side]);
             } else {

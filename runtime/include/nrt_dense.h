@@ -62,9 +62,14 @@ static inline const nrt_q15 *nrt_dense_outputs(const nrt_dense *d)
  * the network d was made from in that state. */
 NRT_API void nrt_dense_step(nrt_dense *d);
 
+/* Up to this many rows (outputs + hidden) a network's sums take one
+ * reduction, and two such networks share nrt_dense_step2's sigmoid pass. */
+#define NRT_DENSE_FEW 4
+
 /* Two networks' steps at once, exactly nrt_dense_step(d0) then
- * nrt_dense_step(d1) (two different forms): when both have at most four
- * rows (outputs + hidden), their sigmoids share one pass of eight. */
+ * nrt_dense_step(d1) (two different forms): faster when both have at most
+ * NRT_DENSE_FEW rows, their sigmoids one pass of eight; otherwise the same
+ * as the two calls. */
 NRT_API void nrt_dense_step2(nrt_dense *d0, nrt_dense *d1);
 
 /* d's state into net (the network d was made from): net then holds what

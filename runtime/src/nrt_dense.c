@@ -119,10 +119,9 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
     return _mm256_castsi256_si128(_mm256_permute4x64_epi64(_mm256_packs_epi32(out, out), 0x08));
 }
 
-/* Up to this many rows, one reduction takes the sums of all of them (four
- * his, four los); more, eight rows share each reduction. Either way eight
- * sigmoids at once. */
-#define NRT_DENSE_FEW 4
+/* Up to NRT_DENSE_FEW rows (nrt_dense.h), one reduction takes the sums of
+ * all of them (four his, four los); more, eight rows share each reduction.
+ * Either way eight sigmoids at once. */
 
 /* The sums of a network of at most NRT_DENSE_FEW rows, for the activations
  * in v: lanes 0-3 the rows' his, 4-7 their los (rows past the last zero). */
