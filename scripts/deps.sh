@@ -38,5 +38,5 @@ if ! PYTHONPATH="$pylcm" "$py" -c 'import lcm' 2> /dev/null; then
   echo "installing: lcm==1.5.3 (PyPI) into $pylcm"
   mkdir -p "$pylcm"
   PIP_BREAK_SYSTEM_PACKAGES=1 "$py" -m pip install -q --no-deps --root-user-action=ignore --disable-pip-version-check \
-    --target "$pylcm" lcm==1.5.3
+    --upgrade --target "$pylcm" lcm==1.5.3
 fi
