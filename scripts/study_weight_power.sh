@@ -1,13 +1,21 @@
 #!/usr/bin/env bash
-# study_weight_power.sh OUT [SEEDS] [THREADS] - the weight-perturbation study of docs/parameters.md: complexifying
-# runs of configs/quick.ini with weight_perturb_power = weight_replace_range = 0.5, 1.0, 1.5, 2.5 and seeds 1..SEEDS
-# (3), then every run's highest dominant against the dominance rankings of all the others (duel_evolve compare).
+# study_weight_power.sh OUT [SEEDS] [THREADS] [-- RUN_OPTION...] - the weight-perturbation study of docs/parameters.md:
+# complexifying runs of configs/quick.ini with weight_perturb_power = weight_replace_range = 0.5, 1.0, 1.5, 2.5 and
+# seeds 1..SEEDS (3), then every run's highest dominant against the dominance rankings of all the others (duel_evolve
+# compare). RUN_OPTIONs go to every `duel_evolve run` (a smaller study: --set pop_size=32 --generations 50).
 # Resumable: a finished run is kept, an unfinished one resumed, comparisons come from their cache.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-out=${1:?usage: study_weight_power.sh OUT [SEEDS] [THREADS]}
-seeds=${2:-3}
-threads=${3:-0}
+usage="usage: study_weight_power.sh OUT [SEEDS] [THREADS] [-- RUN_OPTION...]"
+out=${1:?$usage}
+shift
+seeds=3 threads=0
+if [ $# -gt 0 ] && [ "$1" != -- ]; then seeds=$1 && shift; fi
+if [ $# -gt 0 ] && [ "$1" != -- ]; then threads=$1 && shift; fi
+if [ $# -gt 0 ]; then
+  [ "$1" = -- ] || { echo "$usage" >&2; exit 2; }
+  shift
+fi
 duel=${DUEL_EVOLVE:-$root/build/bin/duel_evolve}
 powers="0.5 1.0 1.5 2.5"
 mkdir -p "$out"
@@ -20,7 +28,7 @@ for p in $powers; do
       "$duel" resume "$d" --threads "$threads" --quiet
     else
       "$duel" run --config "$root/configs/quick.ini" --set weight_perturb_power="$p" --set weight_replace_range="$p" \
-        --seed "$s" --threads "$threads" --out "$d" --quiet
+        --seed "$s" --threads "$threads" --out "$d" --quiet "$@"
     fi
     echo "$(date -u +%FT%TZ) $d: $(tail -n 1 "$d/log.txt" | cut -d' ' -f2-)"
   done

@@ -243,4 +243,29 @@ if(NOT NEAT_SANITIZE AND NOT NEAT_FUZZ)
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/readme_commands.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
   # the longest test (about 150 s): started first, beside the others
   set_tests_properties(docs/readme_commands PROPERTIES COST 1000)
+  # and every command block of docs/*.md, a test per doc with commands (docs/commands/NAME), each after the README's
+  # set-up: made once by docs/commands/setup (the fixture) into docs-setup/, each doc's test runs in a copy of it
+  set(docs_setup ${CMAKE_CURRENT_BINARY_DIR}/docs-setup)
+  add_test(NAME docs/commands/setup
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/readme_commands.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}
+                   --setup ${docs_setup})
+  add_test(NAME docs/commands/cleanup COMMAND ${CMAKE_COMMAND} -E rm -rf ${docs_setup})
+  set_tests_properties(docs/commands/setup PROPERTIES FIXTURES_SETUP docs_setup COST 900)
+  set_tests_properties(docs/commands/cleanup PROPERTIES FIXTURES_CLEANUP docs_setup)
+  file(GLOB docs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/docs/*.md)
+  foreach(doc ${docs})
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${doc}) # a block made ```sh adds its test
+    file(STRINGS ${doc} sh_blocks REGEX "^```sh$")
+    if(sh_blocks)
+      get_filename_component(name ${doc} NAME_WE)
+      add_test(NAME docs/commands/${name}
+               COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/readme_commands.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}
+                       ${doc} ${docs_setup})
+      set_tests_properties(docs/commands/${name} PROPERTIES FIXTURES_REQUIRED docs_setup)
+    endif()
+  endforeach()
+  # the experiment's doc plays two whole plans (about 90 s of CPU): started early too
+  if(TEST docs/commands/experiment)
+    set_tests_properties(docs/commands/experiment PROPERTIES COST 800)
+  endif()
 endif()
