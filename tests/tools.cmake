@@ -133,15 +133,18 @@ add_library(fault_shim MODULE tools/fault_shim.c)
 target_compile_options(fault_shim PRIVATE -Wall -Wextra -Werror) # not -Wpedantic: it casts dlsym's void *
 target_link_libraries(fault_shim PRIVATE ${CMAKE_DL_LIBS})
 set_target_properties(fault_shim PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
-# (every call in the normal build; every 8th under the sanitizers, where a run is ten times slower)
+# (every call in the normal build; every 8th under the sanitizers, where a run is ten times slower, and the
+# smaller populations there: 230 s with coev-small.ini)
 if(NEAT_SANITIZE)
   set(NEAT_FAULT_STRIDE 8)
+  set(NEAT_FAULT_CFG ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small-asan.ini)
 else()
   set(NEAT_FAULT_STRIDE 1)
+  set(NEAT_FAULT_CFG ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini)
 endif()
 add_test(NAME tools/duel_run_faults
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/fault.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:fault_shim>
-                 ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_FAULT_STRIDE})
+                 ${NEAT_FAULT_CFG} ${NEAT_FAULT_STRIDE})
 set_tests_properties(tools/duel_run_faults PROPERTIES TIMEOUT 600)
 
 # replays and rendering (OSMesa, libpng): pixels of known states and of a collision read back from the PNGs;
