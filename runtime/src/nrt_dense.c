@@ -119,12 +119,10 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
     return _mm256_castsi256_si128(_mm256_permute4x64_epi64(_mm256_packs_epi32(out, out), 0x08));
 }
 
-/* Up to NRT_DENSE_FEW rows (nrt_dense.h), one reduction takes the sums of
- * all of them (four his, four los); more, eight rows share each reduction.
- * Either way eight sigmoids at once. */
-
-/* The sums of a network of at most NRT_DENSE_FEW rows, for the activations
- * in v: lanes 0-3 the rows' his, 4-7 their los (rows past the last zero). */
+/* The sums of a network of at most NRT_DENSE_FEW rows (nrt_dense.h), for
+ * the activations in v, in one reduction: lanes 0-3 the rows' his, 4-7
+ * their los (rows past the last zero). More rows share a reduction eight
+ * at a time (nrt_dense_rows); either way eight sigmoids at once. */
 NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few(const nrt_dense *d, const __m256i *v,
                                                                            uint32_t blocks)
 {
