@@ -12,12 +12,15 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNEAT_TOOLS=ON >
 ninja -C build
 ctest --test-dir build --output-on-failure -j "$jobs"
 
-echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer"
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DNEAT_SANITIZE=ON -DNEAT_TOOLS=ON >/dev/null
+echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer (-O1)"
+# -O1 rather than -O0: the sanitized suite runs in half the time (807 s -> 396 s on 2 cores), and -O0
+# keeps its own check in both builds (ctest duelsim/test_golden_O0_*: duelsim and the runtime at -O0).
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-g -O1" \
+      -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" -DNEAT_SANITIZE=ON -DNEAT_TOOLS=ON >/dev/null
 ninja -C build-asan
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
-echo "== identical duel traces from the -O3, -O2 and -O0 sanitizer builds"
+echo "== identical duel traces from the -O3, -O2 and -O1 sanitizer builds"
 cmake -S . -B build-o2 -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNEAT_DUELSIM_O3=OFF -DNEAT_TESTS=OFF >/dev/null
 ninja -C build-o2 duel_evolve
 mkdir -p build/nets
@@ -31,9 +34,9 @@ for game in "builtin:forager-hunter builtin:forager --food 0" "builtin:forager b
   # shellcheck disable=SC2086
   ./build-o2/bin/duel_evolve play $game --trace build/trace-o2.csv > /dev/null
   # shellcheck disable=SC2086
-  ./build-asan/bin/duel_evolve play $game --trace build/trace-o0.csv > /dev/null
+  ./build-asan/bin/duel_evolve play $game --trace build/trace-o1.csv > /dev/null
   cmp build/trace-o3.csv build/trace-o2.csv
-  cmp build/trace-o3.csv build/trace-o0.csv
+  cmp build/trace-o3.csv build/trace-o1.csv
 done
 echo "traces identical"
 

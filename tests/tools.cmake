@@ -133,8 +133,8 @@ add_library(fault_shim MODULE tools/fault_shim.c)
 target_compile_options(fault_shim PRIVATE -Wall -Wextra -Werror) # not -Wpedantic: it casts dlsym's void *
 target_link_libraries(fault_shim PRIVATE ${CMAKE_DL_LIBS})
 set_target_properties(fault_shim PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
-# (every call in the normal build; every 8th under the sanitizers, where a run is ten times slower, and the
-# smaller populations there: 230 s with coev-small.ini)
+# (every call in the normal build; every 8th under the sanitizers, where a run is several times slower, and
+# the smaller populations there: 230 s with coev-small.ini at -O0)
 if(NEAT_SANITIZE)
   set(NEAT_FAULT_STRIDE 8)
   set(NEAT_FAULT_CFG ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small-asan.ini)
