@@ -80,7 +80,7 @@ NRT_AVX2 static inline __m256i nrt_dense_sum8(const __m256i x[8])
 }
 
 /* Table entries i and i + 1 as one 32-bit word (i in the low half: x86 is little endian),
- * for eight indices i <= 191. By scalar loads: vpgatherdd was a fifth of
+ * for eight indices i <= NRT_SIG_ENTRIES - 2. By scalar loads: vpgatherdd was a fifth of
  * the step's time here (perf; it is microcoded on processors with the
  * gather data sampling mitigation). */
 NRT_AVX2 static inline __m256i nrt_dense_entries8(__m256i i)
@@ -98,7 +98,7 @@ NRT_AVX2 static inline __m256i nrt_dense_entries8(__m256i i)
  * 2^20, 0 <= lo < 2^21), as eight Q1.15 values in the low 128 bits. hi
  * clamped to +-2^14 keeps every sum below 2^31 in magnitude, exact where
  * |sum| < 2^30 - 2^21 and of the right sign with |sum| beyond NRT_SIG_LIMIT
- * (2^28.6) elsewhere, which saturates the same. The table lookup is
+ * (2^28.2) elsewhere, which saturates the same. The table lookup is
  * nrt_sig_eval's integer arithmetic, in 32-bit lanes: (hi - lo) * frac <
  * 2^15 * 2^16. */
 NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
@@ -108,7 +108,7 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
     __m256i sum = _mm256_add_epi32(_mm256_slli_epi32(h, 16), lo);
     __m256i x = _mm256_min_epi32(_mm256_abs_epi32(sum), limit);
     __m256i sat = _mm256_cmpeq_epi32(x, limit);
-    __m256i i = _mm256_min_epi32(_mm256_srli_epi32(x, NRT_SIG_SHIFT), _mm256_set1_epi32(191));
+    __m256i i = _mm256_min_epi32(_mm256_srli_epi32(x, NRT_SIG_SHIFT), _mm256_set1_epi32(NRT_SIG_ENTRIES - 2));
     __m256i frac = _mm256_and_si256(_mm256_srli_epi32(x, NRT_SIG_SHIFT - 16), _mm256_set1_epi32(0xFFFF));
     __m256i pair = nrt_dense_entries8(i);
     __m256i t0 = _mm256_and_si256(pair, _mm256_set1_epi32(0xFFFF)), t1 = _mm256_srli_epi32(pair, 16);

@@ -4,13 +4,16 @@
 
 #include "nrt.h"
 
-/* NRT_SIG_TABLE[i] = round(32768 / (1 + exp(-4.9 * i / 64))), i = 0..192:
- * x from 0 to 3 in steps of 1/64 (tests/runtime/test_sigmoid.c recomputes
- * every entry). Only x >= 0 is stored: sigmoid(-x) = 1 - sigmoid(x). */
-extern const uint16_t nrt_sig_table[193];
+/* NRT_SIG_TABLE[i] = round(32768 / (1 + exp(-4.9 * i / 64))), i = 0..145:
+ * x from 0 to 145/64 in steps of 1/64 (tests/runtime/test_sigmoid.c
+ * recomputes every entry), where the entries reach 32768. Only x >= 0 is
+ * stored: sigmoid(-x) = 1 - sigmoid(x). */
+#define NRT_SIG_ENTRIES 146
+extern const uint16_t nrt_sig_table[NRT_SIG_ENTRIES];
 
 #define NRT_SIG_SHIFT 21 /* sums are Q27; 2^27 / 64 = 2^21 per table step */
-#define NRT_SIG_LIMIT ((int64_t)192 << NRT_SIG_SHIFT)
+/* from here on the value is 32768 (table entry 145 and every later one) */
+#define NRT_SIG_LIMIT ((int64_t)(NRT_SIG_ENTRIES - 1) << NRT_SIG_SHIFT)
 
 /* Q1.15 sigmoid of a Q27 sum: inline, because nrt_step calls it once per node. */
 static inline nrt_q15 nrt_sig_eval(int64_t sum)
