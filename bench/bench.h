@@ -26,6 +26,9 @@ typedef struct bench_cfg {
  * keys; 0, or -1 with one line on stderr (load) or in err (load_text). */
 int bench_config_load(bench_cfg *cfg, const char *path);
 int bench_config_load_text(bench_cfg *cfg, const char *name, const char *text, size_t len, char *err, size_t err_len);
+/* The text of bench/TASK.ini as it was when neat_bench was built (bench_defaults.c, generated), or NULL
+ * for a task without one. */
+const char *bench_default_ini(const char *task);
 /* The [bench] keys as "key = value" lines. */
 void bench_config_dump(FILE *out, const bench_cfg *cfg);
 

@@ -12,10 +12,6 @@
 #include "neat_config.h"
 #include "nrt.h"
 
-#ifndef NEAT_BENCH_DIR
-#define NEAT_BENCH_DIR "bench"
-#endif
-
 /* ---- runs in parallel: each run's seed comes from its index, so results do not depend on threads ---- */
 typedef struct bench_job {
     const bench_cfg *cfg;
@@ -147,7 +143,7 @@ static void bench_usage(FILE *f)
                "                  [--config FILE.ini] [--dump-config] [--quiet] [--verbose]\n"
                "       neat_bench activation [--count-steps N --connections 40|200]\n"
                "Runs NEAT on a benchmark of the NEAT paper (Stanley & Miikkulainen 2002); the last line\n"
-               "of stdout is a JSON summary. Defaults come from bench/<task>.ini.\n"
+               "of stdout is a JSON summary. Defaults: bench/<task>.ini, compiled in.\n"
                "  xor, pole, pole-nv        XOR; double pole balancing with and without velocities (docs/parameters.md)\n"
                "  activation                network steps per second of 40- and 200-connection networks\n"
                "  --runs N                  independent runs (default: the task's ini)\n"
@@ -263,11 +259,17 @@ static int bench_main(int argc, char **argv)
     cfg.damping_steps = 1000;
     cfg.generalization_min = 200;
     if (config == NULL) {
-        snprintf(path, sizeof path, "%s/%s.ini", NEAT_BENCH_DIR, task);
-        config = path;
-    }
-    if (bench_config_load(&cfg, config) != 0)
+        /* the defaults are compiled in: an installed neat_bench reads no source tree */
+        const char *text = bench_default_ini(task);
+        char err[600];
+        snprintf(path, sizeof path, "bench/%s.ini (built in)", task);
+        if (text == NULL || bench_config_load_text(&cfg, path, text, strlen(text), err, sizeof err) != 0) {
+            fprintf(stderr, "neat_bench: %s\n", text == NULL ? "no built-in parameters for this task" : err);
+            return 2;
+        }
+    } else if (bench_config_load(&cfg, config) != 0) {
         return 2;
+    }
     if (have_runs)
         cfg.runs = (uint32_t)runs;
     if (have_threads)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # bench_cli.sh - neat_bench from the outside: bad configuration is refused with file:line, the
-# dumped configuration loads back unchanged, and the results do not depend on the thread count.
+# dumped configuration loads back unchanged, the built-in defaults are bench/<task>.ini's, and the results
+# do not depend on the thread count.
 set -euo pipefail
 bench=$1
 what=$2
@@ -31,6 +32,17 @@ dump-roundtrip)
     "$bench" "$task" --dump-config > "$tmp/a.ini"
     "$bench" "$task" --config "$tmp/a.ini" --dump-config > "$tmp/b.ini"
     cmp "$tmp/a.ini" "$tmp/b.ini"
+  done
+  ;;
+built-in)
+  # (bench_cli.sh NEAT_BENCH built-in BENCH_SOURCE_DIR) from a directory with nothing else in it: the
+  # compiled-in defaults give exactly what the source tree's files give
+  src=$3
+  cp "$bench" "$tmp/neat_bench"
+  for task in xor pole pole-nv; do
+    (cd "$tmp" && ./neat_bench "$task" --dump-config > "$tmp/built-in.ini")
+    "$bench" "$task" --config "$src/$task.ini" --dump-config > "$tmp/file.ini"
+    cmp "$tmp/built-in.ini" "$tmp/file.ini" || { echo "$task: built-in defaults differ from $src/$task.ini"; exit 1; }
   done
   ;;
 threads)
