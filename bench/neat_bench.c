@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "duel_cores.h"
 #include "neat_config.h"
 #include "nrt.h"
 
@@ -80,8 +81,7 @@ static int bench_evolve(const char *task, bench_cfg *cfg, int quiet)
     double t0 = bench_now(), secs, sum_ev = 0, sum_hid = 0, sum_conn = 0, sum_gen = 0, median = 0;
 
     if (n_threads == 0) {
-        long n = sysconf(_SC_NPROCESSORS_ONLN);
-        n_threads = n > 0 ? (uint32_t)n : 1;
+        n_threads = duel_cores();
     }
     if (n_threads > cfg->runs)
         n_threads = cfg->runs;

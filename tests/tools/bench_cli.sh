@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # bench_cli.sh - neat_bench from the outside: bad configuration is refused with file:line, the
-# dumped configuration loads back unchanged, the built-in defaults are bench/<task>.ini's, and the results
-# do not depend on the thread count.
+# dumped configuration loads back unchanged, the built-in defaults are bench/<task>.ini's, the results
+# do not depend on the thread count, and every core means those of the process's affinity mask.
 set -euo pipefail
 bench=$1
 what=$2
@@ -44,6 +44,13 @@ built-in)
     "$bench" "$task" --config "$src/$task.ini" --dump-config > "$tmp/file.ini"
     cmp "$tmp/built-in.ini" "$tmp/file.ini" || { echo "$task: built-in defaults differ from $src/$task.ini"; exit 1; }
   done
+  ;;
+affinity)
+  # a thread count of 0 means the cores this process may use (taskset, a job's cpuset), not the machine's
+  command -v taskset > /dev/null || { echo "taskset not installed: skipped"; exit 77; }
+  want=$(taskset -c 0 nproc)
+  got=$(taskset -c 0 "$bench" xor --runs 4 --threads 0 --quiet | tail -1 | sed -n 's/.*"threads":\([0-9]*\).*/\1/p')
+  [ "$got" = "$want" ] || { echo "on core 0 alone: $got threads, expected $want"; exit 1; }
   ;;
 threads)
   one=$("$bench" xor --runs 12 --threads 1 --quiet | tail -1 | sed 's/,"threads".*//')

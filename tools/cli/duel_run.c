@@ -14,6 +14,7 @@
 #include "duel.h"
 #include "duel_cli.h"
 #include "duel_config.h"
+#include "duel_cores.h"
 #include "duel_ctrl.h"
 #include "duel_dominance.h"
 #include "duel_files.h"
@@ -266,9 +267,9 @@ static const char *duel_s(uint32_t n)
 /* The threads a run plays on, in words: "2 threads", or "all 4 cores" for 0. */
 static void duel_threads_words(uint32_t threads, char *buf, size_t cap)
 {
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    uint32_t cores = duel_cores();
     if (threads == 0)
-        snprintf(buf, cap, "all %ld core%s", cores > 0 ? cores : 1L, cores == 1 ? "" : "s");
+        snprintf(buf, cap, "all %u core%s", cores, duel_s(cores));
     else
         snprintf(buf, cap, "%u thread%s", threads, duel_s(threads));
 }

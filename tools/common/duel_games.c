@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "duel.h"
+#include "duel_cores.h"
 #include "duel_games.h"
 #include "neat_phenotype.h"
 
@@ -203,8 +204,7 @@ int duel_games_create(duel_games **out, uint32_t threads, const neat_params *p)
     if (dg == NULL)
         return NEAT_E_NOMEM;
     if (threads == 0) {
-        long n = sysconf(_SC_NPROCESSORS_ONLN);
-        threads = n > 0 ? (uint32_t)n : 1u;
+        threads = duel_cores();
     }
     dg->threads = threads;
     dg->p = *p;

@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <unistd.h>
 
+#include "duel_cores.h"
 #include "duel_pairs.h"
 
 typedef struct duel_pairs_job {
@@ -67,10 +67,9 @@ int duel_pairs_play(duel_pair *pairs, size_t n, uint32_t threads, duel_pairs_pro
     duel_pairs_job job;
     pthread_t th[256];
     uint32_t k, started = 0;
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
 
     if (threads == 0)
-        threads = cores > 0 ? (uint32_t)cores : 1u;
+        threads = duel_cores();
     if (threads > 256)
         threads = 256;
     if ((size_t)threads > n)

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "duel_child.h"
+#include "duel_cores.h"
 #include "duel_ctrl.h"
 #include "duel_exp.h"
 #include "duel_files.h"
@@ -937,10 +938,9 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
     duel_exp_sched s;
     char self[4096];
     uint32_t i, k, jobs, threads, cores;
-    long nproc = sysconf(_SC_NPROCESSORS_ONLN);
     int rc;
 
-    cores = nproc > 0 ? (uint32_t)nproc : 1;
+    cores = duel_cores();
     jobs = o->jobs ? o->jobs : cores;
     threads = o->threads ? o->threads : (cores / jobs ? cores / jobs : 1);
     if (duel_child_self(self, sizeof self) != 0) {

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "duel.h"
+#include "duel_cores.h"
 #include "duel_mpi_internal.h"
 #include "neat.h"
 #include "neat_coev.h"
@@ -110,12 +111,10 @@ static uint32_t duel_mpi_threads_arg(int argc, char **argv)
 
 uint32_t duel_mpi_default_threads(void)
 {
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    uint32_t cores = duel_cores();
     uint32_t local = duel_mpi_g.active && duel_mpi_g.peers != NULL ? duel_mpi_g.peers[duel_mpi_g.rank].local : 1;
     uint32_t t;
-    if (cores < 1)
-        cores = 1;
-    t = (uint32_t)cores / (local ? local : 1);
+    t = cores / (local ? local : 1);
     return t ? t : 1;
 }
 

@@ -3,8 +3,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
+#include "duel_cores.h"
 #include "duel_mpi.h"
 
 int duel_mpi_built(void)
@@ -44,8 +44,7 @@ uint32_t duel_mpi_size(void)
 
 uint32_t duel_mpi_default_threads(void)
 {
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n > 0 ? (uint32_t)n : 1u;
+    return duel_cores();
 }
 
 int duel_mpi_serve(int argc, char **argv, int (*command)(int argc, char **argv))
