@@ -10,7 +10,8 @@
  * activations are identical to nrt_step's (tests/runtime/test_dense.c
  * compares them on random networks). A network qualifies when it has at most
  * NRT_DENSE_MAX_NODES nodes, no two connections with the same source and
- * target, and the dense product is estimated to cost less than the list;
+ * target, and the dense product is estimated to cost less than the list
+ * (it skips the 8 x 16 tiles of the matrix that hold no connection);
  * a processor without AVX2, or a build for anything but x86-64 (or with
  * NRT_NO_AVX2 defined), has no dense step and nrt_dense_make says so.
  */
@@ -32,6 +33,9 @@ typedef struct nrt_dense {
      * activation buffers, padded to whole blocks so that a block loads
      * straight from them (and with room for a last group of eight rows) */
     nrt_q15 act[2][NRT_DENSE_MAX_NODES + 16];
+    /* tiles[g]: bit b set when the tile of rows 8g..8g+7 and columns
+     * 16b..16b+15 has a weight that is not 0 (the step skips the others) */
+    uint8_t tiles[NRT_DENSE_MAX_NODES / 8];
     uint16_t rows;   /* outputs + hidden */
     uint16_t blocks; /* ceil(n_nodes / 16) */
     uint16_t n_inputs, n_nodes;

@@ -11,21 +11,32 @@
 
 int nrt_dense_make(nrt_dense *d, const nrt_net *net)
 {
-    uint32_t rows, blocks, j, k = 0, cols;
+    uint32_t rows, blocks, j, k = 0, cols, tiles = 0, groups;
     if (d == NULL || net == NULL || net->n_nodes > NRT_DENSE_MAX_NODES || net->n_nodes <= net->n_inputs ||
         !__builtin_cpu_supports("avx2"))
         return NRT_E_ARG;
     rows = (uint32_t)net->n_nodes - net->n_inputs;
     blocks = ((uint32_t)net->n_nodes + 15u) / 16u;
     cols = 16u * blocks;
+    groups = (rows + 7u) / 8u;
+    /* the tiles that hold a connection (end[] runs from connection 0 up) */
+    memset(d->tiles, 0, sizeof d->tiles);
+    for (j = 0; j < rows; j++)
+        for (; k < net->end[j]; k++)
+            d->tiles[j / 8u] |= (uint8_t)(1u << (net->src[k] / 16u));
+    for (j = 0; j < groups; j++)
+        tiles += (uint32_t)__builtin_popcount(d->tiles[j]);
     /* Worth it? The list costs about 10 instructions a connection and 12 a
-     * node (bench/duel_instructions.sh); a row of the matrix about 5 a block
-     * of 16 columns and 5 for its sum and sigmoid, whatever the connections. */
-    if (((rows + 7u) & ~7u) * (5u * blocks + 5u) >= 10u * net->n_conns + 12u * rows)
+     * node (bench/duel_instructions.sh); the matrix about 5 per row of a
+     * tile it does not skip and 5 per row for the sums and sigmoids. A
+     * network of at most NRT_DENSE_FEW rows takes every tile. */
+    if (rows <= NRT_DENSE_FEW)
+        tiles = blocks;
+    if (8u * (5u * tiles + 5u * groups) >= 10u * net->n_conns + 12u * rows)
         return NRT_E_ARG;
     /* whole groups of eight rows, the ones past the last all zero */
-    memset(d->w, 0, sizeof d->w[0] * ((rows + 7u) & ~7u) * cols);
-    for (j = 0; j < rows; j++)
+    memset(d->w, 0, sizeof d->w[0] * 8u * groups * cols);
+    for (j = 0, k = 0; j < rows; j++)
         for (; k < net->end[j]; k++) {
             nrt_w12 *cell = &d->w[j * cols + net->src[k]];
             /* two connections between the same nodes: the list's sum has
@@ -53,20 +64,25 @@ void nrt_dense_save(const nrt_dense *d, nrt_net *net)
     net->cur = d->cur;
 }
 
-/* One row's sum in two halves, lanes of 32 bits: hi += m >> 16 and lo += m
- * & 0xFFFF for each vpmaddwd lane m = w_i a_i + w_(i+1) a_(i+1). Two
+/* A row's sum in two halves, lanes of 32 bits: NRT_DENSE_ADD adds one block
+ * of the row (16 cells), hi += m >> 16 and lo += m & 0xFFFF for each
+ * vpmaddwd lane m = w_i a_i + w_(i+1) a_(i+1); NRT_DENSE_ROW sums a whole
+ * row. Two
  * products of at most 2^30 - 2^15 each (|w| <= 32767, |a| <= 32768) keep m
  * below 2^31, exact in 32 bits, and m = hi * 2^16 + lo exactly; the halves
  * add up without overflow (|hi| <= 2^15, lo < 2^16 a block). */
+#define NRT_DENSE_ADD(cells, vb, hi, lo)                                                                            \
+    do {                                                                                                            \
+        __m256i m_ = _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(const void *)(cells)), (vb));           \
+        hi = _mm256_add_epi32(hi, _mm256_srai_epi32(m_, 16));                                                       \
+        lo = _mm256_add_epi32(lo, _mm256_and_si256(m_, _mm256_set1_epi32(0xFFFF)));                                 \
+    } while (0)
 #define NRT_DENSE_ROW(row, v, blocks, hi, lo)                                                                      \
     do {                                                                                                            \
         uint32_t b_;                                                                                                \
         hi = lo = _mm256_setzero_si256();                                                                           \
         for (b_ = 0; b_ < (blocks); b_++) {                                                                         \
-            __m256i m_ = _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(const void *)((row) + 16u * b_)), \
-                                           (v)[b_]);                                                                \
-            hi = _mm256_add_epi32(hi, _mm256_srai_epi32(m_, 16));                                                   \
-            lo = _mm256_add_epi32(lo, _mm256_and_si256(m_, _mm256_set1_epi32(0xFFFF)));                             \
+            NRT_DENSE_ADD((row) + 16u * b_, (v)[b_], hi, lo);                                                       \
         }                                                                                                           \
     } while (0)
 
@@ -157,9 +173,16 @@ NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const 
         _mm_storel_epi64((__m128i *)(void *)next, nrt_dense_sig8(s, _mm256_permute4x64_epi64(s, 0x4E)));
         return;
     }
-    for (j = 0; j < rows; j += 8u) {
-        for (r = 0; r < 8u; r++, row += 16u * blocks)
-            NRT_DENSE_ROW(row, v, blocks, hi[r], lo[r]);
+    for (j = 0; j < rows; j += 8u, row += 8u * 16u * blocks) {
+        /* tile by tile, skipping those without a connection: their
+         * products are all 0, so every sum is the same */
+        uint32_t tiles = d->tiles[j / 8u];
+        for (r = 0; r < 8u; r++)
+            hi[r] = lo[r] = _mm256_setzero_si256();
+        for (b = 0; b < blocks; b++)
+            if (tiles & (1u << b))
+                for (r = 0; r < 8u; r++)
+                    NRT_DENSE_ADD(row + 16u * (blocks * r + b), v[b], hi[r], lo[r]);
         _mm_storeu_si128((__m128i *)(void *)(next + j), nrt_dense_sig8(nrt_dense_sum8(hi), nrt_dense_sum8(lo)));
     }
 }

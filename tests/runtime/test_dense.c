@@ -82,6 +82,36 @@ static void td_copy(td_net *b, const td_net *a)
     b->net.act[1] = b->act[1];
 }
 
+/* Keeps only the connections inside a random choice of 8-row by 16-column
+ * tiles (rows 8g..8g+7 keep the source blocks of a random mask each), as a
+ * NEAT network's hidden rows see few of the columns: the dense step skips
+ * the empty tiles. */
+static void td_thin(td_net *t, uint32_t *seed)
+{
+    uint32_t j, k = 0, kept = 0, mask = 0;
+    for (j = 0; j < (uint32_t)t->net.n_nodes - t->net.n_inputs; j++) {
+        if (j % 8u == 0)
+            mask = td_next(seed) & 15u;
+        for (; k < t->end[j]; k++)
+            if (mask & (1u << (t->src[k] / 16u))) {
+                t->src[kept] = t->src[k];
+                t->weight[kept++] = t->weight[k];
+            }
+        t->end[j] = (uint16_t)kept;
+    }
+    t->net.n_conns = (uint16_t)kept;
+}
+
+/* Whether d skips a tile (a group of rows without a connection from some block). */
+static int td_skips(const nrt_dense *d)
+{
+    uint32_t g;
+    for (g = 0; g < (d->rows + 7u) / 8u; g++)
+        if ((uint32_t)__builtin_popcount(d->tiles[g]) < d->blocks)
+            return 1;
+    return 0;
+}
+
 static int td_available(void)
 {
     static nrt_dense d;
@@ -94,13 +124,15 @@ static int td_available(void)
     return ok;
 }
 
-/* 400 random networks of 2-64 nodes, 12 steps each with new random inputs:
- * after every step all activations of both copies are equal. */
+/* 400 random networks of 2-64 nodes (every eighth of at most NRT_DENSE_FEW
+ * rows), half of them thinned to a few tiles
+ * (td_thin), 12 steps each with new random inputs: after every step all
+ * activations of both copies are equal. */
 static void test_dense_matches_step(void **state)
 {
     static nrt_dense d;
     td_net *a = test_malloc(sizeof *a), *b = test_malloc(sizeof *b);
-    uint32_t seed = 0x2545F491u, trial, made = 0, big = 0;
+    uint32_t seed = 0x2545F491u, trial, made = 0, big = 0, skips = 0;
     (void)state;
     if (!td_available()) {
         test_free(a);
@@ -110,14 +142,22 @@ static void test_dense_matches_step(void **state)
     for (trial = 0; trial < 400; trial++) {
         uint32_t n_in = 1 + td_next(&seed) % 20, n_out = 1 + td_next(&seed) % 6;
         uint32_t room = NRT_DENSE_MAX_NODES - n_in - n_out, n_hid = td_next(&seed) % (room + 1);
-        uint32_t density = 3 + td_next(&seed) % 6, s1 = seed, s2 = seed, step, i;
+        uint32_t density = 3 + td_next(&seed) % 6, s1 = seed, step, i;
+        if (trial % 8u == 7u) { /* at most NRT_DENSE_FEW rows: the one-reduction sums */
+            n_out = 1 + td_next(&seed) % NRT_DENSE_FEW;
+            n_hid = td_next(&seed) % (NRT_DENSE_FEW + 1 - n_out);
+            s1 = seed;
+        }
         td_make(a, n_in, n_out, n_hid, density, &s1);
-        td_make(b, n_in, n_out, n_hid, density, &s2);
         seed = s1;
+        if (trial % 2u)
+            td_thin(a, &seed);
+        td_copy(b, a);
         if (nrt_dense_make(&d, &b->net) != NRT_OK)
             continue;
         made++;
         big += b->net.n_nodes - b->net.n_inputs > 4;
+        skips += b->net.n_nodes - b->net.n_inputs > 4 && td_skips(&d);
         for (step = 0; step < 12; step++) {
             nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_dense_inputs(&d);
             for (i = 0; i < n_in; i++)
@@ -133,6 +173,8 @@ static void test_dense_matches_step(void **state)
     /* the comparison covered both ways of taking the sigmoid */
     assert_true(made >= 300);
     assert_true(big >= 200 && made - big >= 20);
+    /* and the step skipping tiles */
+    assert_true(skips >= 100);
     test_free(a);
     test_free(b);
 }
@@ -296,7 +338,21 @@ static void test_dense_refuses(void **state)
     td_make(t, 13, 3, 0, 8, &seed);
     t->net.n_nodes = NRT_DENSE_MAX_NODES + 1;
     assert_int_equal(nrt_dense_make(&d, &t->net), NRT_E_ARG);
-    td_make(t, 13, 3, 48, 0, &seed); /* 51 rows, no connections */
+    /* 51 rows, where the first of each eight has one connection in each
+     * block of 16 columns: every tile of the matrix to multiply for 28
+     * connections, which the list steps faster */
+    td_make(t, 13, 3, 48, 0, &seed);
+    {
+        uint32_t j, b, k = 0;
+        for (j = 0; j < 51; j++) {
+            for (b = 0; j % 8u == 0 && b < 4; b++) {
+                t->src[k] = (uint16_t)(16u * b + j / 8u);
+                t->weight[k++] = 1000;
+            }
+            t->end[j] = (uint16_t)k;
+        }
+        t->net.n_conns = (uint16_t)k;
+    }
     assert_int_equal(nrt_dense_make(&d, &t->net), NRT_E_ARG);
     test_free(t);
 }
