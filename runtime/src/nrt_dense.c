@@ -67,10 +67,10 @@ void nrt_dense_save(const nrt_dense *d, nrt_net *net)
 /* A row's sum in two halves, lanes of 32 bits: NRT_DENSE_ADD adds one block
  * of the row (16 cells), hi += m >> 16 and lo += m & 0xFFFF for each
  * vpmaddwd lane m = w_i a_i + w_(i+1) a_(i+1); NRT_DENSE_ROW sums a whole
- * row. Two
- * products of at most 2^30 - 2^15 each (|w| <= 32767, |a| <= 32768) keep m
- * below 2^31, exact in 32 bits, and m = hi * 2^16 + lo exactly; the halves
- * add up without overflow (|hi| <= 2^15, lo < 2^16 a block). */
+ * row. Two products of at most 2^30 - 2^15 each (|w| <= 32767, |a| <=
+ * 32768) keep m below 2^31, exact in 32 bits, and m = hi * 2^16 + lo
+ * exactly; the halves add up without overflow (|hi| <= 2^15, lo < 2^16 a
+ * block). */
 #define NRT_DENSE_ADD(cells, vb, hi, lo)                                                                            \
     do {                                                                                                            \
         __m256i m_ = _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(const void *)(cells)), (vb));           \
