@@ -6,7 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <unistd.h>
 
 #include "bench.h"
 #include "duel_cores.h"
@@ -80,9 +79,8 @@ static int bench_evolve(const char *task, bench_cfg *cfg, int quiet)
     uint64_t *ev;
     double t0 = bench_now(), secs, sum_ev = 0, sum_hid = 0, sum_conn = 0, sum_gen = 0, median = 0;
 
-    if (n_threads == 0) {
+    if (n_threads == 0)
         n_threads = duel_cores();
-    }
     if (n_threads > cfg->runs)
         n_threads = cfg->runs;
     memset(&job, 0, sizeof job);

@@ -38,16 +38,14 @@ extern const int32_t duel_sin_q[1026];
  * line in every module that takes a cos or sin, so it is defined once, in
  * duel_trig.c (DUEL_TRIG_C), which saves 136 bytes on Cortex-M0+ and no
  * instruction. */
-#ifndef __OPTIMIZE_SIZE__
-#define DUEL_SIN_QUARTER static inline int32_t duel_sin_quarter(uint32_t p)
-#else
+#ifdef __OPTIMIZE_SIZE__
 int32_t duel_sin_quarter(uint32_t p);
-#ifdef DUEL_TRIG_C
-#define DUEL_SIN_QUARTER int32_t duel_sin_quarter(uint32_t p)
+#define DUEL_SIN_LINKAGE
+#else
+#define DUEL_SIN_LINKAGE static inline
 #endif
-#endif
-#ifdef DUEL_SIN_QUARTER
-DUEL_SIN_QUARTER
+#if !defined(__OPTIMIZE_SIZE__) || defined(DUEL_TRIG_C)
+DUEL_SIN_LINKAGE int32_t duel_sin_quarter(uint32_t p)
 {
     uint32_t i = p >> 20, frac = p & 0xFFFFFu;
     int64_t lo, hi;

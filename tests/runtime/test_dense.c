@@ -125,9 +125,9 @@ static int td_available(void)
 }
 
 /* 400 random networks of 2-64 nodes (every eighth of at most NRT_DENSE_FEW
- * rows), half of them thinned to a few tiles
- * (td_thin), 12 steps each with new random inputs: after every step all
- * activations of both copies are equal. */
+ * rows), half of them thinned to a few tiles (td_thin), 12 steps each with
+ * new random inputs: after every step all activations of both copies are
+ * equal. */
 static void test_dense_matches_step(void **state)
 {
     static nrt_dense d;

@@ -4,7 +4,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <unistd.h>
 
 #include "duel.h"
 #include "duel_cores.h"
@@ -203,9 +202,8 @@ int duel_games_create(duel_games **out, uint32_t threads, const neat_params *p)
     duel_games *dg = (duel_games *)calloc(1, sizeof *dg);
     if (dg == NULL)
         return NEAT_E_NOMEM;
-    if (threads == 0) {
+    if (threads == 0)
         threads = duel_cores();
-    }
     dg->threads = threads;
     dg->p = *p;
     pthread_mutex_init(&dg->lock, NULL);

@@ -113,8 +113,7 @@ uint32_t duel_mpi_default_threads(void)
 {
     uint32_t cores = duel_cores();
     uint32_t local = duel_mpi_g.active && duel_mpi_g.peers != NULL ? duel_mpi_g.peers[duel_mpi_g.rank].local : 1;
-    uint32_t t;
-    t = cores / (local ? local : 1);
+    uint32_t t = cores / (local ? local : 1);
     return t ? t : 1;
 }
 
