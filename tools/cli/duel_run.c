@@ -267,11 +267,12 @@ static const char *duel_s(uint32_t n)
 /* The threads a run plays on, in words: "2 threads", or "all 4 cores" for 0. */
 static void duel_threads_words(uint32_t threads, char *buf, size_t cap)
 {
-    uint32_t cores = duel_cores();
-    if (threads == 0)
+    if (threads == 0) {
+        uint32_t cores = duel_cores();
         snprintf(buf, cap, "all %u core%s", cores, duel_s(cores));
-    else
+    } else {
         snprintf(buf, cap, "%u thread%s", threads, duel_s(threads));
+    }
 }
 
 static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
