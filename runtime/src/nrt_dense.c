@@ -64,25 +64,27 @@ void nrt_dense_save(const nrt_dense *d, nrt_net *net)
     net->cur = d->cur;
 }
 
-/* A row's sum in two halves, lanes of 32 bits: NRT_DENSE_ADD adds one block
- * of the row (16 cells), hi += m >> 16 and lo += m & 0xFFFF for each
- * vpmaddwd lane m = w_i a_i + w_(i+1) a_(i+1); NRT_DENSE_ROW sums a whole
- * row. Two products of at most 2^30 - 2^15 each (|w| <= 32767, |a| <=
- * 32768) keep m below 2^31, exact in 32 bits, and m = hi * 2^16 + lo
- * exactly; the halves add up without overflow (|hi| <= 2^15, lo < 2^16 a
- * block). */
-#define NRT_DENSE_ADD(cells, vb, hi, lo)                                                                            \
+/* A row's sum in two parts, lanes of 32 bits: NRT_DENSE_ADD adds one
+ * block of the row (16 cells), hi += m >> 16 and sm += m (wrapping) for
+ * each vpmaddwd lane m = w_i a_i + w_(i+1) a_(i+1); NRT_DENSE_ROW sums a
+ * whole row. Two products of at most 2^30 - 2^15 each (|w| <= 32767, |a| <=
+ * 32768) keep m below 2^31, exact in 32 bits, and m = hi * 2^16 + lo with
+ * 0 <= lo < 2^16: hi is the sum's high part, exact (|hi| <= 2^15 a lane),
+ * and sm the whole sum modulo 2^32, whose low part (the sum of the los,
+ * below 2^21 for a row) is then sm - hi * 2^16, exact too. One add fewer
+ * per block than summing the los themselves. */
+#define NRT_DENSE_ADD(cells, vb, hi, sm)                                                                            \
     do {                                                                                                            \
         __m256i m_ = _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(const void *)(cells)), (vb));           \
         hi = _mm256_add_epi32(hi, _mm256_srai_epi32(m_, 16));                                                       \
-        lo = _mm256_add_epi32(lo, _mm256_and_si256(m_, _mm256_set1_epi32(0xFFFF)));                                 \
+        sm = _mm256_add_epi32(sm, m_);                                                                              \
     } while (0)
-#define NRT_DENSE_ROW(row, v, blocks, hi, lo)                                                                      \
+#define NRT_DENSE_ROW(row, v, blocks, hi, sm)                                                                      \
     do {                                                                                                            \
         uint32_t b_;                                                                                                \
-        hi = lo = _mm256_setzero_si256();                                                                           \
+        hi = sm = _mm256_setzero_si256();                                                                           \
         for (b_ = 0; b_ < (blocks); b_++) {                                                                         \
-            NRT_DENSE_ADD((row) + 16u * b_, (v)[b_], hi, lo);                                                       \
+            NRT_DENSE_ADD((row) + 16u * b_, (v)[b_], hi, sm);                                                       \
         }                                                                                                           \
     } while (0)
 
@@ -110,18 +112,20 @@ NRT_AVX2 static inline __m256i nrt_dense_entries8(__m256i i)
                              (int32_t)e[6], (int32_t)e[7]);
 }
 
-/* nrt_sig_eval of eight sums given as halves, sum = hi * 2^16 + lo (|hi| <=
- * 2^20, 0 <= lo < 2^21), as eight Q1.15 values in the low 128 bits. hi
- * clamped to +-2^14 keeps every sum below 2^31 in magnitude, exact where
- * |sum| < 2^30 - 2^21 and of the right sign with |sum| beyond NRT_SIG_LIMIT
- * (2^28.2) elsewhere, which saturates the same. The table lookup is
- * nrt_sig_eval's integer arithmetic, in 32-bit lanes: (hi - lo) * frac <
- * 2^15 * 2^16. */
-NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
+/* nrt_sig_eval of eight sums given as their high parts and the sums
+ * modulo 2^32 (NRT_DENSE_ADD: sum = hi * 2^16 + lo, |hi| <= 2^20, 0 <= lo
+ * < 2^21, sm = sum mod 2^32), as eight Q1.15 values in the low 128 bits.
+ * hi clamped to +-2^14 (h) keeps every sum below 2^31 in magnitude: h *
+ * 2^16 + lo = sm + (h - hi) * 2^16 modulo 2^32, the sum itself where |sum|
+ * < 2^30 - 2^21 (there h = hi) and of the right sign with |sum| beyond
+ * NRT_SIG_LIMIT (2^28.2) elsewhere, which saturates the same. The table
+ * lookup is nrt_sig_eval's integer arithmetic, in 32-bit lanes: (t1 - t0)
+ * * frac < 2^15 * 2^16. */
+NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i sm)
 {
     const __m256i limit = _mm256_set1_epi32((int32_t)NRT_SIG_LIMIT), top = _mm256_set1_epi32(32768);
     __m256i h = _mm256_max_epi32(_mm256_min_epi32(hi, _mm256_set1_epi32(1 << 14)), _mm256_set1_epi32(-(1 << 14)));
-    __m256i sum = _mm256_add_epi32(_mm256_slli_epi32(h, 16), lo);
+    __m256i sum = _mm256_add_epi32(sm, _mm256_slli_epi32(_mm256_sub_epi32(h, hi), 16));
     __m256i x = _mm256_min_epi32(_mm256_abs_epi32(sum), limit);
     __m256i sat = _mm256_cmpeq_epi32(x, limit);
     __m256i i = _mm256_min_epi32(_mm256_srli_epi32(x, NRT_SIG_SHIFT), _mm256_set1_epi32(NRT_SIG_ENTRIES - 2));
@@ -137,7 +141,7 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i lo)
 
 /* The sums of a network of at most NRT_DENSE_FEW rows (nrt_dense.h), for
  * the activations in v, in one reduction: lanes 0-3 the rows' his, 4-7
- * their los (rows past the last zero). More rows share a reduction eight
+ * their sums modulo 2^32 (rows past the last zero). More rows share a reduction four
  * at a time (nrt_dense_rows); either way eight sigmoids at once. */
 NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few(const nrt_dense *d, const __m256i *v,
                                                                            uint32_t blocks)
@@ -145,7 +149,7 @@ NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few(cons
     __m256i x[8];
     const nrt_w12 *row = d->w;
     uint32_t r;
-    /* x[r]: row r's hi, x[4 + r] its lo; the rows past the last are in the
+    /* x[r]: row r's hi, x[4 + r] its sm; the rows past the last are in the
      * matrix (a whole group of eight), all zero, and sum to zero: cheaper
      * to add up than to branch around */
     for (r = 0; r < NRT_DENSE_FEW; r++, row += 16u * blocks)
@@ -163,27 +167,34 @@ NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few(cons
 NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const nrt_dense *d, const nrt_q15 *a,
                                                                           nrt_q15 *next, uint32_t blocks)
 {
-    __m256i v[NRT_DENSE_MAX_NODES / 16], hi[8], lo[8];
+    __m256i v[NRT_DENSE_MAX_NODES / 16], x[8], s[2];
     const nrt_w12 *row = d->w;
-    uint32_t b, j, r, rows = d->rows;
+    uint32_t b, j, q, r, rows = d->rows;
     for (b = 0; b < blocks; b++)
         v[b] = _mm256_loadu_si256((const __m256i *)(const void *)(a + 16u * b));
     if (rows <= NRT_DENSE_FEW) {
-        __m256i s = nrt_dense_few(d, v, blocks);
-        _mm_storel_epi64((__m128i *)(void *)next, nrt_dense_sig8(s, _mm256_permute4x64_epi64(s, 0x4E)));
+        s[0] = nrt_dense_few(d, v, blocks);
+        _mm_storel_epi64((__m128i *)(void *)next, nrt_dense_sig8(s[0], _mm256_permute4x64_epi64(s[0], 0x4E)));
         return;
     }
     for (j = 0; j < rows; j += 8u, row += 8u * 16u * blocks) {
         /* tile by tile, skipping those without a connection: their
-         * products are all 0, so every sum is the same */
+         * products are all 0, so every sum is the same; four rows at a
+         * time, so that their eight sums and a block of activations stay
+         * in registers (eight rows' sixteen spilled), one reduction each */
         uint32_t tiles = d->tiles[j / 8u];
-        for (r = 0; r < 8u; r++)
-            hi[r] = lo[r] = _mm256_setzero_si256();
-        for (b = 0; b < blocks; b++)
-            if (tiles & (1u << b))
-                for (r = 0; r < 8u; r++)
-                    NRT_DENSE_ADD(row + 16u * (blocks * r + b), v[b], hi[r], lo[r]);
-        _mm_storeu_si128((__m128i *)(void *)(next + j), nrt_dense_sig8(nrt_dense_sum8(hi), nrt_dense_sum8(lo)));
+        for (q = 0; q < 2u; q++) {
+            for (r = 0; r < 4u; r++)
+                x[r] = x[4 + r] = _mm256_setzero_si256();
+            for (b = 0; b < blocks; b++)
+                if (tiles & (1u << b))
+                    for (r = 0; r < 4u; r++)
+                        NRT_DENSE_ADD(row + 16u * (blocks * (4u * q + r) + b), v[b], x[r], x[4 + r]);
+            s[q] = nrt_dense_sum8(x);
+        }
+        /* the eight rows' his, then their sums */
+        _mm_storeu_si128((__m128i *)(void *)(next + j), nrt_dense_sig8(_mm256_permute2x128_si256(s[0], s[1], 0x20),
+                                                                       _mm256_permute2x128_si256(s[0], s[1], 0x31)));
     }
 }
 
