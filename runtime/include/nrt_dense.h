@@ -24,6 +24,7 @@ extern "C" {
 #endif
 
 #define NRT_DENSE_MAX_NODES 64 /* columns: every node, in blocks of 16 */
+#define NRT_DENSE_NARROW_L1 65535 /* times 32768, below 2^31 */
 
 typedef struct nrt_dense {
     /* row j (node n_inputs + j): the weight from each node, 0 where there is
@@ -36,6 +37,10 @@ typedef struct nrt_dense {
     /* tiles[g]: bit b set when the tile of rows 8g..8g+7 and columns
      * 16b..16b+15 has a weight that is not 0 (the step skips the others) */
     uint8_t tiles[NRT_DENSE_MAX_NODES / 8];
+    /* narrow: bit g set when every row of group g has weights of at most
+     * NRT_DENSE_NARROW_L1 in absolute sum, so that its sums fit 32 bits
+     * whatever the activations (the step adds them up directly) */
+    uint8_t narrow;
     uint16_t rows;   /* outputs + hidden */
     uint16_t blocks; /* ceil(n_nodes / 16) */
     uint16_t n_inputs, n_nodes;

@@ -36,7 +36,9 @@ int nrt_dense_make(nrt_dense *d, const nrt_net *net)
         return NRT_E_ARG;
     /* whole groups of eight rows, the ones past the last all zero */
     memset(d->w, 0, sizeof d->w[0] * 8u * groups * cols);
-    for (j = 0, k = 0; j < rows; j++)
+    d->narrow = (uint8_t)((1u << groups) - 1u);
+    for (j = 0, k = 0; j < rows; j++) {
+        uint32_t l1 = 0; /* at most 64 * 32767 */
         for (; k < net->end[j]; k++) {
             nrt_w12 *cell = &d->w[j * cols + net->src[k]];
             /* two connections between the same nodes: the list's sum has
@@ -44,7 +46,12 @@ int nrt_dense_make(nrt_dense *d, const nrt_net *net)
             if (*cell != 0)
                 return NRT_E_ARG;
             *cell = net->weight[k];
+            l1 += (uint32_t)(net->weight[k] < 0 ? -net->weight[k] : net->weight[k]);
         }
+        /* |sum| <= l1 * 32768 < 2^31: every partial sum fits 32 bits */
+        if (l1 > NRT_DENSE_NARROW_L1)
+            d->narrow &= (uint8_t)~(1u << (j / 8u));
+    }
     d->rows = (uint16_t)rows;
     d->blocks = (uint16_t)blocks;
     d->n_inputs = net->n_inputs;
@@ -183,6 +190,19 @@ NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const 
          * time, so that their eight sums and a block of activations stay
          * in registers (eight rows' sixteen spilled), one reduction each */
         uint32_t tiles = d->tiles[j / 8u];
+        if (d->narrow & (1u << (j / 8u))) {
+            /* every sum fits 32 bits (nrt_dense_make): the products added
+             * up directly, eight rows to a reduction, the high parts 0 */
+            for (r = 0; r < 8u; r++)
+                x[r] = _mm256_setzero_si256();
+            for (b = 0; b < blocks; b++)
+                if (tiles & (1u << b))
+                    for (r = 0; r < 8u; r++)
+                        x[r] = _mm256_add_epi32(x[r], _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(
+                                                          const void *)(row + 16u * (blocks * r + b))), v[b]));
+            _mm_storeu_si128((__m128i *)(void *)(next + j), nrt_dense_sig8(_mm256_setzero_si256(), nrt_dense_sum8(x)));
+            continue;
+        }
         for (q = 0; q < 2u; q++) {
             for (r = 0; r < 4u; r++)
                 x[r] = x[4 + r] = _mm256_setzero_si256();

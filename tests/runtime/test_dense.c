@@ -102,6 +102,22 @@ static void td_thin(td_net *t, uint32_t *seed)
     t->net.n_conns = (uint16_t)kept;
 }
 
+/* Every weight divided by div: small weights, as evolved networks have,
+ * make rows whose sums fit 32 bits (nrt_dense.narrow) even with many
+ * connections. */
+static void td_shrink(td_net *t, int div)
+{
+    uint32_t k;
+    for (k = 0; k < t->net.n_conns; k++)
+        t->weight[k] = (nrt_w12)(t->weight[k] / div);
+}
+
+/* Of d's groups of eight rows: how many have sums that fit 32 bits. */
+static uint32_t td_narrow(const nrt_dense *d)
+{
+    return (uint32_t)__builtin_popcount(d->narrow);
+}
+
 /* Whether d skips a tile (a group of rows without a connection from some block). */
 static int td_skips(const nrt_dense *d)
 {
@@ -125,14 +141,14 @@ static int td_available(void)
 }
 
 /* 400 random networks of 2-64 nodes (every eighth of at most NRT_DENSE_FEW
- * rows), half of them thinned to a few tiles (td_thin), 12 steps each with
- * new random inputs: after every step all activations of both copies are
- * equal. */
+ * rows), half of them thinned to a few tiles (td_thin), half with weights
+ * a sixteenth of the range (td_shrink), 12 steps each with new random
+ * inputs: after every step all activations of both copies are equal. */
 static void test_dense_matches_step(void **state)
 {
     static nrt_dense d;
     td_net *a = test_malloc(sizeof *a), *b = test_malloc(sizeof *b);
-    uint32_t seed = 0x2545F491u, trial, made = 0, big = 0, skips = 0;
+    uint32_t seed = 0x2545F491u, trial, made = 0, big = 0, skips = 0, narrow = 0, wide = 0;
     (void)state;
     if (!td_available()) {
         test_free(a);
@@ -152,12 +168,18 @@ static void test_dense_matches_step(void **state)
         seed = s1;
         if (trial % 2u)
             td_thin(a, &seed);
+        if (trial % 4u < 2u)
+            td_shrink(a, 16);
         td_copy(b, a);
         if (nrt_dense_make(&d, &b->net) != NRT_OK)
             continue;
         made++;
         big += b->net.n_nodes - b->net.n_inputs > 4;
         skips += b->net.n_nodes - b->net.n_inputs > 4 && td_skips(&d);
+        if (d.rows > NRT_DENSE_FEW) {
+            narrow += td_narrow(&d);
+            wide += (d.rows + 7u) / 8u - td_narrow(&d);
+        }
         for (step = 0; step < 12; step++) {
             nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_dense_inputs(&d);
             for (i = 0; i < n_in; i++)
@@ -173,8 +195,9 @@ static void test_dense_matches_step(void **state)
     /* the comparison covered both ways of taking the sigmoid */
     assert_true(made >= 300);
     assert_true(big >= 200 && made - big >= 20);
-    /* and the step skipping tiles */
+    /* and the step skipping tiles, and groups of rows summed both ways */
     assert_true(skips >= 100);
+    assert_true(narrow >= 100 && wide >= 100);
     test_free(a);
     test_free(b);
 }
@@ -275,7 +298,51 @@ static void test_dense_extremes(void **state)
     test_free(b);
 }
 
-/* One input (of 8) into 8 outputs (the eight-row sigmoid) or 3 (the scalar one)
+/* Rows at the bound of nrt_dense.narrow: weights of absolute sum 65535
+ * (the sums fit 32 bits, added up directly) and 65536 (not), every input
+ * -32768 or 32767, every sign: the sums reach -+(2^31 - 2^15) and 2^31. */
+static void test_dense_narrow_bound(void **state)
+{
+    static nrt_dense d;
+    td_net *a = test_malloc(sizeof *a), *b = test_malloc(sizeof *b);
+    uint32_t last, sign, i, j, k;
+    (void)state;
+    if (!td_available()) {
+        test_free(a);
+        test_free(b);
+        skip();
+    }
+    for (last = 1; last <= 2; last++)
+        for (sign = 0; sign < 4; sign++) {
+            uint32_t seed = 9;
+            td_make(a, 16, 8, 0, 0, &seed);
+            for (j = 0, k = 0; j < 8; j++) {
+                for (i = 0; i < 16; i++, k++) {
+                    nrt_w12 w = (nrt_w12)(i < 2 ? 32767 : (i == 2 ? (int)last : 0));
+                    a->src[k] = (uint16_t)i;
+                    a->weight[k] = (sign & 1u) && j % 2u == 0 ? (nrt_w12)-w : w;
+                }
+                a->end[j] = (uint16_t)k;
+            }
+            a->net.n_conns = (uint16_t)k;
+            td_copy(b, a);
+            assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
+            assert_int_equal(td_narrow(&d), last == 1);
+            for (j = 0; j < 3; j++) {
+                nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_dense_inputs(&d);
+                for (i = 0; i < 16; i++)
+                    ia[i] = ib[i] = (sign & 2u) ? -32768 : 32767;
+                nrt_step(&a->net, ia, NULL);
+                nrt_dense_step(&d);
+                nrt_dense_save(&d, &b->net);
+                assert_memory_equal(a->net.act[a->net.cur], b->net.act[b->net.cur], 2u * a->net.n_nodes);
+            }
+        }
+    test_free(a);
+    test_free(b);
+}
+
+/* One input (of 8) into 8 outputs (the eight-row sigmoid, with either sum) or 3 (the scalar one)
  * with weights spread over the whole range: every input value from -32768
  * to 32767 puts the sums on every segment of the sigmoid's table, its last
  * entries and its saturation included. */
@@ -292,26 +359,32 @@ static void test_dense_sigmoid_sweep(void **state)
         test_free(b);
         skip();
     }
-    for (n_out = 3; n_out <= 8; n_out += 5) {
+    for (n_out = 3; n_out <= 16; n_out += 5) {
         uint32_t seed = 5;
         uint32_t k = 0, i;
-        /* inputs 1-7 with weight 0: connections enough for the dense form */
-        td_make(a, 8, n_out, 0, 0, &seed);
-        for (j = 0; j < n_out; j++) {
+        /* inputs 1-7 with weight 0: connections enough for the dense form;
+         * for 13 (8 outputs again) inputs 1 and 2 (always 0) with weight
+         * 32767, so that the rows' sums may exceed 32 bits (nrt_dense.narrow
+         * clear: the other sum) */
+        uint32_t n = n_out == 13 ? 8 : n_out;
+        td_make(a, 8, n, 0, 0, &seed);
+        for (j = 0; j < n; j++) {
             for (i = 0; i < 8; i++, k++) {
                 a->src[k] = (uint16_t)i;
-                a->weight[k] = i == 0 ? w[j] : 0;
+                a->weight[k] = i == 0 ? w[j] : (n_out == 13 && i <= 2 ? 32767 : 0);
             }
             a->end[j] = (uint16_t)k;
         }
         a->net.n_conns = (uint16_t)k;
         td_copy(b, a);
         assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
+        if (n == 8)
+            assert_int_equal(td_narrow(&d), n_out == 8);
         for (x = -32768; x <= 32767; x++) {
             nrt_inputs(&a->net)[0] = nrt_dense_inputs(&d)[0] = (nrt_q15)x;
             nrt_step(&a->net, nrt_inputs(&a->net), NULL);
             nrt_dense_step(&d);
-            assert_memory_equal(nrt_outputs(&a->net), nrt_dense_outputs(&d), 2u * n_out);
+            assert_memory_equal(nrt_outputs(&a->net), nrt_dense_outputs(&d), 2u * n);
         }
     }
     test_free(a);
@@ -363,6 +436,7 @@ int main(void)
         cmocka_unit_test(test_dense_matches_step),
         cmocka_unit_test(test_dense_pair_matches_step),
         cmocka_unit_test(test_dense_extremes),
+        cmocka_unit_test(test_dense_narrow_bound),
         cmocka_unit_test(test_dense_sigmoid_sweep),
         cmocka_unit_test(test_dense_refuses),
     };
