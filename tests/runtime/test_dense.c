@@ -264,13 +264,29 @@ static void test_dense_pair_matches_step(void **state)
     }
 }
 
+/* Three steps of a and of d (made from its copy b) with every input x:
+ * after each the activations of both are equal. */
+static void td_steps_constant(td_net *a, td_net *b, nrt_dense *d, nrt_q15 x)
+{
+    uint32_t i, j;
+    for (j = 0; j < 3; j++) {
+        nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_dense_inputs(d);
+        for (i = 0; i < a->net.n_inputs; i++)
+            ia[i] = ib[i] = x;
+        nrt_step(&a->net, ia, NULL);
+        nrt_dense_step(d);
+        nrt_dense_save(d, &b->net);
+        assert_memory_equal(a->net.act[a->net.cur], b->net.act[b->net.cur], 2u * a->net.n_nodes);
+    }
+}
+
 /* The largest sums there are: every weight 32767 or -32767 from every node,
  * every activation -32768 or 32767, in one 64-node network. */
 static void test_dense_extremes(void **state)
 {
     static nrt_dense d;
     td_net *a = test_malloc(sizeof *a), *b = test_malloc(sizeof *b);
-    uint32_t sign, i, j;
+    uint32_t sign, j;
     (void)state;
     if (!td_available()) {
         test_free(a);
@@ -284,15 +300,7 @@ static void test_dense_extremes(void **state)
             a->weight[j] = (sign & 1u) ? -32767 : 32767;
         td_copy(b, a);
         assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
-        for (j = 0; j < 3; j++) {
-            nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_dense_inputs(&d);
-            for (i = 0; i < 16; i++)
-                ia[i] = ib[i] = (sign & 2u) ? -32768 : 32767;
-            nrt_step(&a->net, ia, NULL);
-            nrt_dense_step(&d);
-            nrt_dense_save(&d, &b->net);
-            assert_memory_equal(a->net.act[a->net.cur], b->net.act[b->net.cur], 2u * a->net.n_nodes);
-        }
+        td_steps_constant(a, b, &d, (sign & 2u) ? -32768 : 32767);
     }
     test_free(a);
     test_free(b);
@@ -328,15 +336,7 @@ static void test_dense_narrow_bound(void **state)
             td_copy(b, a);
             assert_int_equal(nrt_dense_make(&d, &b->net), NRT_OK);
             assert_int_equal(td_narrow(&d), last == 1);
-            for (j = 0; j < 3; j++) {
-                nrt_q15 *ia = nrt_inputs(&a->net), *ib = nrt_dense_inputs(&d);
-                for (i = 0; i < 16; i++)
-                    ia[i] = ib[i] = (sign & 2u) ? -32768 : 32767;
-                nrt_step(&a->net, ia, NULL);
-                nrt_dense_step(&d);
-                nrt_dense_save(&d, &b->net);
-                assert_memory_equal(a->net.act[a->net.cur], b->net.act[b->net.cur], 2u * a->net.n_nodes);
-            }
+            td_steps_constant(a, b, &d, (sign & 2u) ? -32768 : 32767);
         }
     test_free(a);
     test_free(b);
