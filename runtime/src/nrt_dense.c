@@ -148,8 +148,9 @@ NRT_AVX2 static inline __m128i nrt_dense_sig8(__m256i hi, __m256i sm)
 
 /* The sums of a network of at most NRT_DENSE_FEW rows (nrt_dense.h), for
  * the activations in v, in one reduction: lanes 0-3 the rows' his, 4-7
- * their sums modulo 2^32 (rows past the last zero). More rows share a reduction four
- * at a time (nrt_dense_rows); either way eight sigmoids at once. */
+ * their sums modulo 2^32 (rows past the last zero). More rows share a
+ * reduction four at a time, or eight in a narrow group (nrt_dense_rows);
+ * either way eight sigmoids at once. */
 NRT_AVX2 static inline __attribute__((always_inline)) __m256i nrt_dense_few(const nrt_dense *d, const __m256i *v,
                                                                            uint32_t blocks)
 {
