@@ -71,18 +71,19 @@ void nrt_dense_save(const nrt_dense *d, nrt_net *net)
     net->cur = d->cur;
 }
 
-/* A row's sum in two parts, lanes of 32 bits: NRT_DENSE_ADD adds one
- * block of the row (16 cells), hi += m >> 16 and sm += m (wrapping) for
- * each vpmaddwd lane m = w_i a_i + w_(i+1) a_(i+1); NRT_DENSE_ROW sums a
- * whole row. Two products of at most 2^30 - 2^15 each (|w| <= 32767, |a| <=
- * 32768) keep m below 2^31, exact in 32 bits, and m = hi * 2^16 + lo with
- * 0 <= lo < 2^16: hi is the sum's high part, exact (|hi| <= 2^15 a lane),
- * and sm the whole sum modulo 2^32, whose low part (the sum of the los,
- * below 2^21 for a row) is then sm - hi * 2^16, exact too. One add fewer
- * per block than summing the los themselves. */
+/* A row's sum in two parts, lanes of 32 bits: NRT_DENSE_MADD is one
+ * block's vpmaddwd, lane m = w_i a_i + w_(i+1) a_(i+1); NRT_DENSE_ADD adds
+ * one block of the row (16 cells), hi += m >> 16 and sm += m (wrapping);
+ * NRT_DENSE_ROW sums a whole row. Two products of at most 2^30 - 2^15 each
+ * (|w| <= 32767, |a| <= 32768) keep m below 2^31, exact in 32 bits, and
+ * m = hi * 2^16 + lo with 0 <= lo < 2^16: hi is the sum's high part, exact
+ * (|hi| <= 2^15 a lane), and sm the whole sum modulo 2^32, whose low part
+ * (the sum of the los, below 2^21 for a row) is then sm - hi * 2^16, exact
+ * too. One add fewer per block than summing the los themselves. */
+#define NRT_DENSE_MADD(cells, vb) _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(const void *)(cells)), (vb))
 #define NRT_DENSE_ADD(cells, vb, hi, sm)                                                                            \
     do {                                                                                                            \
-        __m256i m_ = _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(const void *)(cells)), (vb));           \
+        __m256i m_ = NRT_DENSE_MADD(cells, vb);                                                                     \
         hi = _mm256_add_epi32(hi, _mm256_srai_epi32(m_, 16));                                                       \
         sm = _mm256_add_epi32(sm, m_);                                                                              \
     } while (0)
@@ -199,8 +200,7 @@ NRT_AVX2 static inline __attribute__((always_inline)) void nrt_dense_rows(const 
             for (b = 0; b < blocks; b++)
                 if (tiles & (1u << b))
                     for (r = 0; r < 8u; r++)
-                        x[r] = _mm256_add_epi32(x[r], _mm256_madd_epi16(_mm256_loadu_si256((const __m256i *)(
-                                                          const void *)(row + 16u * (blocks * r + b))), v[b]));
+                        x[r] = _mm256_add_epi32(x[r], NRT_DENSE_MADD(row + 16u * (blocks * r + b), v[b]));
             _mm_storeu_si128((__m128i *)(void *)(next + j), nrt_dense_sig8(_mm256_setzero_si256(), nrt_dense_sum8(x)));
             continue;
         }
