@@ -76,7 +76,8 @@ skip() {
 # - the weight-perturbation study (docs/parameters.md): its runs as small as run's, 20 generations
 # - mpirun: as root, allowed; on this machine (oversubscribed, shared memory and loopback: the
 #   environment below)
-# - benchmarks: 2 generations (coev_bench), 2 games (duel_instructions), 2 runs (neat_bench pole, pole-nv)
+# - benchmarks: 2 generations (coev_bench), 2 games (duel_instructions), 2 runs (neat_bench pole, pole-nv),
+#   this build in place of the older one (generation_cost: there is no other build here)
 small="--set pop_size=8 --set species_opponents=1 --set hof_opponents=1 --set first_opponents=2 --set compare_configs=1"
 reduce() { # reduce COMMAND: prints the command to run
   local c=$1
@@ -100,6 +101,7 @@ reduce() { # reduce COMMAND: prints the command to run
   "scripts/study_weight_power.sh"*) c="$c 0 -- $small --generations 20" ;;
   "bench/coev_bench.sh"*) c="bench/coev_bench.sh build 2" ;;
   "bench/duel_instructions.sh"*) c="bench/duel_instructions.sh build 2" ;;
+  "bench/generation_cost.sh "*) c=${c#bench/generation_cost.sh }; c="bench/generation_cost.sh build ${c#* }" ;;
   *"neat_bench pole"*) c="$c --runs 2" ;;
   esac
   echo "$c"
