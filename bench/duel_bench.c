@@ -95,13 +95,15 @@ int main(int argc, char **argv)
         if (strcmp(argv[i], "--callgrind") == 0 && i + 1 < argc) {
             callgrind_games = atoi(argv[++i]);
         } else if (strcmp(argv[i], "--scalar") == 0) {
-            duel_simd_allow(0); /* the scalar sensing, for comparisons */
+            duel_simd_allow(DUEL_SIMD_NONE); /* the scalar sensing, for comparisons */
+        } else if (strcmp(argv[i], "--avx2") == 0) {
+            duel_simd_allow(DUEL_SIMD_AVX2); /* the AVX2 sensing without AVX-512VL */
         } else if (strcmp(argv[i], "--conns") == 0 && i + 1 < argc) {
             callgrind_conns = atoi(argv[++i]);
         } else if (strcmp(argv[i], "--write-blobs") == 0 && i + 1 < argc) {
             blob_dir = argv[++i];
         } else {
-            fprintf(stderr, "usage: duel_bench [--scalar] [--callgrind GAMES [--conns 39|202]] [--write-blobs DIR]\n");
+            fprintf(stderr, "usage: duel_bench [--scalar | --avx2] [--callgrind GAMES [--conns 39|202]] [--write-blobs DIR]\n");
             return 2;
         }
     }
@@ -159,7 +161,8 @@ int main(int argc, char **argv)
     printf("202-connection networks: %.0f game-steps/s (%.1f ns per robot-step)\n", sps202, 0.5e9 / sps202);
     printf("288-game comparison (39 connections): %.3f s, %.0f games/s (wins %u / %u, draws %u, timeouts %u)\n", cmp_s,
            288.0 / cmp_s, tally.wins_a, tally.wins_b, tally.draws, tally.timeouts);
-    printf("sensing: %s\n", duel_simd_active() ? "AVX2 (duel_sense_avx2.c)" : "scalar");
+    printf("sensing: %s\n", duel_simd_active() == DUEL_SIMD_AVX512 ? "AVX2 + AVX-512VL (duel_sense_avx2.c)"
+                             : duel_simd_active() == DUEL_SIMD_AVX2 ? "AVX2 (duel_sense_avx2.c)" : "scalar");
     printf("{\"game_steps_per_s_39\":%.0f,\"game_steps_per_s_202\":%.0f,\"games_per_s_288\":%.1f,"
            "\"comparison_seconds\":%.4f}\n", sps39, sps202, 288.0 / cmp_s, cmp_s);
 done:

@@ -107,13 +107,20 @@ DUEL_API void duel_cossin(duel_angle a, int32_t *c, int32_t *s);
 DUEL_API uint32_t duel_isqrt64(uint64_t x);
 
 /* ---- the vector path ---- */
-/* 1 when duel_play senses both robots with AVX2: an x86-64 build on a
- * processor that has it (docs/duelsim.md, "Speed"). Every result is the same
- * with and without it. */
+/* The sensing paths of an x86-64 build (docs/duelsim.md, "Speed"); every
+ * result is the same on each. */
+enum duel_simd {
+    DUEL_SIMD_NONE = 0,  /* scalar: duel_sense for each robot */
+    DUEL_SIMD_AVX2 = 1,  /* both robots at once with AVX2 */
+    DUEL_SIMD_AVX512 = 2 /* the same, the food scan with AVX-512VL's masks */
+};
+/* The path duel_play takes (enum duel_simd): the best this processor has,
+ * up to the cap of duel_simd_allow. Non-zero whenever any vector path is. */
 DUEL_API int duel_simd_active(void);
-/* 0 turns the AVX2 path off (1, the default, allows it), for comparisons and
- * tests. Not synchronised: call it before any game starts. */
-DUEL_API void duel_simd_allow(int allow);
+/* Caps the path at level (enum duel_simd; the default, DUEL_SIMD_AVX512,
+ * allows every one; 0 the scalar path only), for comparisons and tests.
+ * Not synchronised: call it before any game starts. */
+DUEL_API void duel_simd_allow(int level);
 
 /* ---- controllers ---- */
 enum duel_builtin { DUEL_IDLE = 0, DUEL_SPINNER, DUEL_FORAGER, DUEL_HUNTER, DUEL_FORAGER_HUNTER, DUEL_N_BUILTINS };

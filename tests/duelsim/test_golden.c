@@ -23,10 +23,11 @@
  * The inputs are made here, from a fixed xorshift generator, as raw blobs and
  * raw world states, so nothing outside duelsim and the runtime can move them.
  *
- * Where the processor has AVX2, the games are played twice, with the AVX2
- * sensing (duel_sense_avx2.c) and with the scalar one, against the same
- * hashes, and every random state is also sensed by duel_sense_both, which
- * must give duel_sense's inputs exactly.
+ * Where the processor has AVX2, the games are played on every sensing path
+ * it has (AVX2, and AVX2 with AVX-512VL's masks where it has those too:
+ * duel_sense_avx2.c) and on the scalar one, against the same hashes, and
+ * every random state is also sensed by duel_sense_both on each vector path,
+ * which must give duel_sense's inputs exactly.
  */
 
 static uint64_t tg_rng = 0x9E3779B97F4A7C15ull;
@@ -185,18 +186,39 @@ static duel_angle tg_heading(void)
     }
 }
 
-/* 1 when duel_sense_both (the AVX2 path, with its food lanes made afresh)
- * gives other inputs than duel_sense on both sides of w */
+/* the best vector path here (enum duel_simd), read once */
+static int tg_simd_best(void)
+{
+    static int best = -1;
+    if (best < 0) {
+        duel_simd_allow(DUEL_SIMD_AVX512);
+        best = duel_simd_active();
+    }
+    return best;
+}
+
+static const char *const tg_simd_name[] = {"scalar", "AVX2", "AVX-512VL"};
+
+/* The vector path (enum duel_simd) on which duel_sense_both, with its food
+ * lanes made afresh, gives other inputs than duel_sense on both sides of w,
+ * or 0: each one this processor has */
 static int tg_paths_differ(const duel_world *w)
 {
     nrt_q15 scalar[2][DUEL_N_INPUTS], both[2][DUEL_N_INPUTS];
     duel_lanes lanes;
-    int side;
+    int side, level, differ = 0;
     for (side = 0; side < 2; side++)
         duel_sense(w, side, scalar[side]);
-    lanes.mask = ~0u;
-    assert_int_equal(duel_sense_both(w, &lanes, both[0], both[1]), 0);
-    return memcmp(both, scalar, sizeof both) != 0;
+    for (level = DUEL_SIMD_AVX2; level <= tg_simd_best() && !differ; level++) {
+        duel_simd_allow(level);
+        assert_int_equal(duel_simd_active(), level);
+        lanes.mask = ~0u;
+        assert_int_equal(duel_sense_both(w, &lanes, both[0], both[1]), 0);
+        if (memcmp(both, scalar, sizeof both) != 0)
+            differ = level;
+    }
+    duel_simd_allow(DUEL_SIMD_AVX512);
+    return differ;
 }
 
 /* 200,000 readings of random states: robots anywhere (on food, on each
@@ -239,15 +261,17 @@ static void test_golden_sensing(void **state)
             for (k = 0; k < DUEL_N_INPUTS; k++)
                 tg_hash(&h, in[k]);
         }
-        if (duel_simd_active()) {
-            if (tg_paths_differ(&w)) {
-                print_error("state %d: the AVX2 sensing differs from duel_sense\n", n);
+        if (tg_simd_best() != DUEL_SIMD_NONE) {
+            int differ = tg_paths_differ(&w);
+            if (differ) {
+                print_error("state %d: the %s sensing differs from duel_sense\n", n, tg_simd_name[differ]);
                 fail();
             }
             simd_states++;
         }
     }
-    print_message("sensing: %d states, %d of them also through the AVX2 path\n", n, simd_states);
+    print_message("sensing: %d states, %d of them also through the vector paths up to %s\n", n, simd_states,
+                  tg_simd_name[tg_simd_best()]);
     tg_check("sensing", h, 0xbb2c7fb9fb6477e0ull);
 }
 
@@ -260,7 +284,7 @@ static void test_golden_simd_thresholds(void **state)
 {
     int m, off, diag, side, checked = 0;
     (void)state;
-    if (!duel_simd_active()) {
+    if (tg_simd_best() == DUEL_SIMD_NONE) {
         print_message("no AVX2 here: nothing to compare\n");
         return;
     }
@@ -281,7 +305,8 @@ static void test_golden_simd_thresholds(void **state)
                 w.robot[0].heading = (duel_angle)(m * 2654435761u);
                 w.robot[1].heading = (duel_angle)(m * 40503u);
                 if (tg_paths_differ(&w)) {
-                    print_error("d = %lld (m = %d, diagonal %d): the AVX2 sensing differs\n", (long long)d, m, diag);
+                    print_error("d = %lld (m = %d, diagonal %d): the %s sensing differs\n", (long long)d, m, diag,
+                                tg_simd_name[tg_paths_differ(&w)]);
                     fail();
                 }
                 checked++;
@@ -300,12 +325,14 @@ static void test_golden_simd_thresholds(void **state)
                 w.robot[1].y = w.robot[0].y;
                 w.robot[1].heading = (duel_angle)(side ^ 2) << 30;
                 if (tg_paths_differ(&w)) {
-                    print_error("heading %d, row %d, at %d: the AVX2 sensing differs\n", side, m, off);
+                    print_error("heading %d, row %d, at %d: the %s sensing differs\n", side, m, off,
+                                tg_simd_name[tg_paths_differ(&w)]);
                     fail();
                 }
                 checked++;
             }
-    print_message("%d states at the readings' steps and on sector boundaries: AVX2 = scalar\n", checked);
+    print_message("%d states at the readings' steps and on sector boundaries: every vector path up to %s = scalar\n",
+                  checked, tg_simd_name[tg_simd_best()]);
 }
 
 /* ---- network steps ---- */
@@ -453,15 +480,16 @@ static void tg_games(void)
 
 static void test_golden_games(void **state)
 {
+    int level;
     (void)state;
-    if (duel_simd_active()) {
-        print_message("games with the AVX2 sensing\n");
+    /* the best path first, then each lower one down to the scalar sensing */
+    for (level = tg_simd_best(); level >= DUEL_SIMD_NONE; level--) {
+        duel_simd_allow(level);
+        assert_int_equal(duel_simd_active(), level);
+        print_message("games with the %s sensing\n", tg_simd_name[level]);
         tg_games();
-        duel_simd_allow(0);
     }
-    print_message("games with the scalar sensing\n");
-    tg_games();
-    duel_simd_allow(1);
+    duel_simd_allow(DUEL_SIMD_AVX512);
 }
 
 int main(void)
