@@ -198,6 +198,7 @@ static inline int duel_food_near(const nrt_q15 in[DUEL_N_INPUTS])
 typedef struct duel_lanes {
     uint32_t mask;  /* the food_mask it holds, or ~0: not made yet */
     uint32_t pairs;
+    int level;      /* the sensing path (enum duel_simd), read once per game */
 #if DUEL_HAVE_AVX2
     int64_t x[(DUEL_MAX_FOOD + 1) / 2][4], y[(DUEL_MAX_FOOD + 1) / 2][4];
 #endif
@@ -205,7 +206,8 @@ typedef struct duel_lanes {
 
 /* Both robots' inputs, exactly as duel_sense gives them, with AVX2: 0, or
  * -1 when this build or processor has no AVX2 path (then duel_sense twice).
- * lanes starts with mask ~0u. */
+ * lanes starts from duel_lanes_init, at the start of a game. */
+void duel_lanes_init(duel_lanes *lanes);
 int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
                     nrt_q15 east[DUEL_N_INPUTS]);
 

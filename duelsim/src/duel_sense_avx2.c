@@ -216,6 +216,20 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
 
 #define DUEL_AVX512 __attribute__((target("avx2,avx512f,avx512vl,avx512dq")))
 
+/* duel_readings4 of four squared distances less one (unsigned; all ones:
+ * none, reading 0) with AVX-512DQ's conversions between 64-bit integers and
+ * doubles; the same values by the same argument */
+DUEL_AVX512 static inline __attribute__((always_inline)) __m256i duel_readings4_vl(__m256i d2m1)
+{
+    const __m256i minus1 = _mm256_set1_epi64x(-1);
+    __mmask8 some = _mm256_cmpneq_epu64_mask(d2m1, minus1);
+    __m256d x = _mm256_cvtepi64_pd(_mm256_sub_epi64(d2m1, minus1));
+    __m256i r = _mm256_cvttpd_epi64(_mm256_sqrt_pd(x));
+    __m256i n = _mm256_srli_epi64(_mm256_mul_epu32(r, _mm256_set1_epi64x(1293543092)), 40);
+    __m256i v = _mm256_sub_epi64(_mm256_set1_epi64x(32768), _mm256_srli_epi64(_mm256_sub_epi64(n, minus1), 1));
+    return _mm256_maskz_min_epi64(some, v, _mm256_set1_epi64x(32767));
+}
+
 /* duel_scan_pair with AVX-512VL: the keys are d2 - 1 as unsigned (an item
  * at the robot's centre wraps to the largest, none), the minimum unsigned
  * (vpminuq), the sector test into masks and the and-not of two masks
@@ -224,7 +238,7 @@ DUEL_AVX512 static void duel_scan_pair_vl(const duel_world *w, const duel_lanes 
                                           const __m256i by[5], int64_t robot_d2, int64_t rd[12])
 {
     const __m256i rx = duel_lanes_of(w->robot[0].x, w->robot[1].x), ry = duel_lanes_of(w->robot[0].y, w->robot[1].y);
-    const __m256i minus1 = _mm256_set1_epi64x(-1), top = _mm256_set1_epi64x(INT64_MIN);
+    const __m256i minus1 = _mm256_set1_epi64x(-1);
     __m256i best[5];
     uint32_t p;
     int k;
@@ -242,12 +256,14 @@ DUEL_AVX512 static void duel_scan_pair_vl(const duel_world *w, const duel_lanes 
         for (k = 0; k < 5; k++)
             best[k] = _mm256_mask_min_epu64(best[k], _kandn_mask8(s[(k + 4) % 5], s[k]), best[k], d2m1);
     }
-    for (k = 0; k < 5; k++) {
-        /* the nearer of the two halves, as duel_scan_pair's key (top bit flipped) */
+    for (k = 0; k < 5; k++)
+        /* the nearer of the two halves */
         best[k] = _mm256_min_epu64(best[k], _mm256_permute4x64_epi64(best[k], 0x4E));
-        best[k] = _mm256_xor_si256(best[k], top);
-    }
-    duel_scan_readings(best, robot_d2, rd);
+    /* (west k, east k, west k+1, east k+1), as duel_scan_readings */
+    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4_vl(_mm256_blend_epi32(best[0], best[1], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4_vl(_mm256_blend_epi32(best[2], best[3], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 8),
+                        duel_readings4_vl(_mm256_blend_epi32(best[4], _mm256_set1_epi64x(robot_d2 - 1), 0xF0)));
 }
 
 DUEL_AVX2 static void duel_sense_both_avx2(const duel_world *w, duel_lanes *lanes, int vl, nrt_q15 west[DUEL_N_INPUTS],
@@ -296,13 +312,19 @@ DUEL_AVX2 static void duel_sense_both_avx2(const duel_world *w, duel_lanes *lane
     }
 }
 
+void duel_lanes_init(duel_lanes *lanes)
+{
+    /* the processor's features once per game, not per step */
+    lanes->mask = ~0u;
+    lanes->level = duel_simd_active();
+}
+
 int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
                     nrt_q15 east[DUEL_N_INPUTS])
 {
-    int level = duel_simd_active();
-    if (level == DUEL_SIMD_NONE)
+    if (lanes->level == DUEL_SIMD_NONE)
         return -1;
-    duel_sense_both_avx2(w, lanes, level == DUEL_SIMD_AVX512, west, east);
+    duel_sense_both_avx2(w, lanes, lanes->level == DUEL_SIMD_AVX512, west, east);
     return 0;
 }
 
@@ -311,6 +333,12 @@ int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_
 int duel_simd_active(void)
 {
     return DUEL_SIMD_NONE;
+}
+
+void duel_lanes_init(duel_lanes *lanes)
+{
+    lanes->mask = ~0u;
+    lanes->level = DUEL_SIMD_NONE;
 }
 
 int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],

@@ -188,11 +188,17 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
     char path[8400], msg[1200];
     for (i = 0; i < p->n_methods; i++) {
         duel_plan_method *m = &p->m[i];
+        int n;
         duel_config_default(&m->cfg);
         if (from_dir)
-            snprintf(path, sizeof path, "%s/configs/%s.ini", base, m->name);
+            n = snprintf(path, sizeof path, "%s/configs/%s.ini", base, m->name);
         else
-            snprintf(path, sizeof path, "%s/%s.ini", base, m->preset);
+            n = snprintf(path, sizeof path, "%s/%s.ini", base, m->preset);
+        if (n < 0 || (size_t)n >= sizeof path) {
+            snprintf(err, err_len, "[method %s]: the path of its configuration is longer than %zu bytes", m->name,
+                     sizeof path - 1);
+            return -1;
+        }
         if (duel_config_read(&m->cfg, path, msg, sizeof msg) != 0) {
             snprintf(err, err_len, "[method %s]: %s", m->name, msg);
             return -1;
