@@ -204,10 +204,17 @@ typedef struct duel_lanes {
 #endif
 } duel_lanes;
 
+/* A game's lanes, at its start: the processor's features read once per
+ * game, not per step (inline: the firmware has no use for it) */
+static inline void duel_lanes_init(duel_lanes *lanes)
+{
+    lanes->mask = ~0u;
+    lanes->level = duel_simd_active();
+}
+
 /* Both robots' inputs, exactly as duel_sense gives them, with AVX2: 0, or
  * -1 when this build or processor has no AVX2 path (then duel_sense twice).
  * lanes starts from duel_lanes_init, at the start of a game. */
-void duel_lanes_init(duel_lanes *lanes);
 int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
                     nrt_q15 east[DUEL_N_INPUTS]);
 
