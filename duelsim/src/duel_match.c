@@ -77,7 +77,7 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
 #if DUEL_HAVE_AVX2
     /* the same steps, faster for small networks (tests/duelsim/test_golden.c) */
     duel_lanes_init(&lanes);
-    if (duel_simd_active()) {
+    if (lanes.level != DUEL_SIMD_NONE) {
         if (west->net != NULL && nrt_dense_make(&dense_of[DUEL_WEST], west->net) == NRT_OK)
             dense[DUEL_WEST] = &dense_of[DUEL_WEST];
         if (east->net != NULL && nrt_dense_make(&dense_of[DUEL_EAST], east->net) == NRT_OK)

@@ -151,7 +151,7 @@ static void duel_lanes_make(duel_lanes *l, const duel_world *w)
  * (floor(sqrt(floor(d2 / 722500))) = floor(floor(sqrt(d2)) / 850), 722500 =
  * 850^2). tests/duelsim/test_golden.c compares it with duel_sense at every
  * distance where a reading steps. */
-DUEL_AVX2 static inline __attribute__((always_inline)) __m256i duel_readings4(__m256i key)
+DUEL_AVX2 static __m256i duel_readings4(__m256i key)
 {
     const __m256i none = _mm256_cmpeq_epi64(key, _mm256_set1_epi64x(INT64_MAX));
     const __m256i two52 = _mm256_set1_epi64x(0x4330000000000000LL), one = _mm256_set1_epi64x(1);
@@ -164,19 +164,15 @@ DUEL_AVX2 static inline __attribute__((always_inline)) __m256i duel_readings4(__
     return _mm256_andnot_si256(none, v);
 }
 
-/* The readings from each sector's nearest key, best[k] (west, east) in both
- * halves, and the robot rangefinder's squared distance: rd[2k + side] for
- * sector k, rd[10] (and rd[11]) for the robot rangefinder. */
-DUEL_AVX2 static inline __attribute__((always_inline)) void duel_scan_readings(const __m256i best[5], int64_t robot_d2,
-                                                                              int64_t rd[12])
+/* Pair p of the food lanes from both robots (rx, ry): the offsets into
+ * *vx, *vy, and their squared lengths (below 2^52: exact) */
+DUEL_AVX2 static inline __attribute__((always_inline)) __m256i duel_pair_offsets(const duel_lanes *l, uint32_t p,
+                                                                                __m256i rx, __m256i ry, __m256i *vx,
+                                                                                __m256i *vy)
 {
-    const __m256i flip = _mm256_set1_epi64x(INT64_MAX);
-    /* (west k, east k, west k+1, east k+1): sectors 0-1, 2-3, then 4 and
-     * the robot rangefinder's distance */
-    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4(_mm256_blend_epi32(best[0], best[1], 0xF0)));
-    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4(_mm256_blend_epi32(best[2], best[3], 0xF0)));
-    _mm256_storeu_si256((__m256i *)(void *)(rd + 8),
-                        duel_readings4(_mm256_blend_epi32(best[4], _mm256_add_epi64(_mm256_set1_epi64x(robot_d2), flip), 0xF0)));
+    *vx = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->x[p]), rx);
+    *vy = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->y[p]), ry);
+    return _mm256_add_epi64(_mm256_mul_epi32(*vx, *vx), _mm256_mul_epi32(*vy, *vy));
 }
 
 /* The food readings of both robots and the robot reading: rd[2k + side] for
@@ -196,10 +192,7 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
     for (k = 0; k < 5; k++)
         best[k] = flip;
     for (p = 0; p < l->pairs; p++) {
-        __m256i vx = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->x[p]), rx);
-        __m256i vy = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->y[p]), ry);
-        __m256i d2 = _mm256_add_epi64(_mm256_mul_epi32(vx, vx), _mm256_mul_epi32(vy, vy));
-        __m256i key = _mm256_add_epi64(d2, flip);
+        __m256i vx, vy, key = _mm256_add_epi64(duel_pair_offsets(l, p, rx, ry, &vx, &vy), flip);
         __m256i m[5];
         duel_sectors4(vx, vy, bx, by, m);
         for (k = 0; k < 5; k++) {
@@ -212,7 +205,12 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
         __m256i other = _mm256_permute4x64_epi64(best[k], 0x4E);
         best[k] = _mm256_blendv_epi8(best[k], other, _mm256_cmpgt_epi64(best[k], other));
     }
-    duel_scan_readings(best, robot_d2, rd);
+    /* (west k, east k, west k+1, east k+1): sectors 0-1, 2-3, then 4 and
+     * the robot rangefinder's distance */
+    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4(_mm256_blend_epi32(best[0], best[1], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4(_mm256_blend_epi32(best[2], best[3], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 8),
+                        duel_readings4(_mm256_blend_epi32(best[4], _mm256_add_epi64(_mm256_set1_epi64x(robot_d2), flip), 0xF0)));
 }
 
 #define DUEL_AVX512 __attribute__((target("avx2,avx512f,avx512vl,avx512dq")))
@@ -247,9 +245,7 @@ DUEL_AVX512 static void duel_scan_pair_vl(const duel_world *w, const duel_lanes 
     for (k = 0; k < 5; k++)
         best[k] = minus1;
     for (p = 0; p < l->pairs; p++) {
-        __m256i vx = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->x[p]), rx);
-        __m256i vy = _mm256_sub_epi64(_mm256_loadu_si256((const __m256i *)(const void *)l->y[p]), ry);
-        __m256i d2m1 = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(vx, vx), _mm256_mul_epi32(vy, vy)), minus1);
+        __m256i vx, vy, d2m1 = _mm256_add_epi64(duel_pair_offsets(l, p, rx, ry, &vx, &vy), minus1);
         __mmask8 s[5];
         /* s[k]: v clockwise of boundary k (duel_sectors4) */
         for (k = 0; k < 5; k++)
@@ -260,7 +256,7 @@ DUEL_AVX512 static void duel_scan_pair_vl(const duel_world *w, const duel_lanes 
     for (k = 0; k < 5; k++)
         /* the nearer of the two halves */
         best[k] = _mm256_min_epu64(best[k], _mm256_permute4x64_epi64(best[k], 0x4E));
-    /* (west k, east k, west k+1, east k+1), as duel_scan_readings */
+    /* the lanes of duel_scan_pair's readings */
     _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4_vl(_mm256_blend_epi32(best[0], best[1], 0xF0)));
     _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4_vl(_mm256_blend_epi32(best[2], best[3], 0xF0)));
     _mm256_storeu_si256((__m256i *)(void *)(rd + 8),
