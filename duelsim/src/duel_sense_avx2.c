@@ -47,16 +47,20 @@ int duel_simd_active(void)
 }
 
 #define DUEL_AVX2 __attribute__((target("avx2")))
+/* Every helper below is inlined into the two sensing functions at the end
+ * (the AVX2 one and the AVX-512VL one, whose target includes AVX2's): so
+ * the boundaries stay in registers, and there is no call per step. */
+#define DUEL_INLINE static inline __attribute__((always_inline))
 
 /* (west value, east value) in both halves */
-DUEL_AVX2 static __m256i duel_lanes_of(int64_t west, int64_t east)
+DUEL_AVX2 DUEL_INLINE __m256i duel_lanes_of(int64_t west, int64_t east)
 {
     return _mm256_set_epi64x(east, west, east, west);
 }
 
 /* x / 2^30 rounded as duel_round_shift does, right for results that fit 32
  * bits (the boundaries: at most 2^30 + 1), sign-extended from those */
-DUEL_AVX2 static __m256i duel_round30(__m256i x)
+DUEL_AVX2 DUEL_INLINE __m256i duel_round30(__m256i x)
 {
     const __m256i half = _mm256_set1_epi64x((int64_t)1 << 29);
     __m256i neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), x);
@@ -69,7 +73,7 @@ DUEL_AVX2 static __m256i duel_round30(__m256i x)
 /* Both robots' frames (duel_frame_of) as their boundaries in lanes (west,
  * east, west, east): the eight products of each robot four at a time; the
  * headings' cos and sin into c[2], s[2]. */
-DUEL_AVX2 static void duel_frames_of(const duel_world *w, int32_t c[2], int32_t s[2], __m256i bx[5], __m256i by[5])
+DUEL_AVX2 DUEL_INLINE void duel_frames_of(const duel_world *w, int32_t c[2], int32_t s[2], __m256i bx[5], __m256i by[5])
 {
     __m256i vc, vs, kc, ks, cc, ss, cs, sc, lo_x, lo_y, hi_x, hi_y;
     duel_cossin_q30(w->robot[DUEL_WEST].heading, &c[0], &s[0]);
@@ -105,7 +109,7 @@ DUEL_AVX2 static void duel_frames_of(const duel_world *w, int32_t c[2], int32_t 
  * is duel_sector's tree for every non-zero v (a bearing on boundary k-1
  * belongs to sector k, on the ray opposite it to no neighbour of it); v = 0
  * gets no sector. */
-DUEL_AVX2 static inline __attribute__((always_inline)) void duel_sectors4(__m256i vx, __m256i vy, const __m256i bx[5],
+DUEL_AVX2 DUEL_INLINE void duel_sectors4(__m256i vx, __m256i vy, const __m256i bx[5],
                                                                          const __m256i by[5], __m256i m[5])
 {
     __m256i s[5];
@@ -151,7 +155,7 @@ static void duel_lanes_make(duel_lanes *l, const duel_world *w)
  * (floor(sqrt(floor(d2 / 722500))) = floor(floor(sqrt(d2)) / 850), 722500 =
  * 850^2). tests/duelsim/test_golden.c compares it with duel_sense at every
  * distance where a reading steps. */
-DUEL_AVX2 static __m256i duel_readings4(__m256i key)
+DUEL_AVX2 DUEL_INLINE __m256i duel_readings4(__m256i key)
 {
     const __m256i none = _mm256_cmpeq_epi64(key, _mm256_set1_epi64x(INT64_MAX));
     const __m256i two52 = _mm256_set1_epi64x(0x4330000000000000LL), one = _mm256_set1_epi64x(1);
@@ -166,7 +170,7 @@ DUEL_AVX2 static __m256i duel_readings4(__m256i key)
 
 /* Pair p of the food lanes from both robots (rx, ry): the offsets into
  * *vx, *vy, and their squared lengths (below 2^52: exact) */
-DUEL_AVX2 static inline __attribute__((always_inline)) __m256i duel_pair_offsets(const duel_lanes *l, uint32_t p,
+DUEL_AVX2 DUEL_INLINE __m256i duel_pair_offsets(const duel_lanes *l, uint32_t p,
                                                                                 __m256i rx, __m256i ry, __m256i *vx,
                                                                                 __m256i *vy)
 {
@@ -177,7 +181,7 @@ DUEL_AVX2 static inline __attribute__((always_inline)) __m256i duel_pair_offsets
 
 /* The food readings of both robots and the robot reading: rd[2k + side] for
  * sector k, rd[10] (and rd[11]) for the robot rangefinder at robot_d2. */
-DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, const __m256i bx[5], const __m256i by[5],
+DUEL_AVX2 DUEL_INLINE void duel_scan_pair(const duel_world *w, const duel_lanes *l, const __m256i bx[5], const __m256i by[5],
                                      int64_t robot_d2, int64_t rd[12])
 {
     /* keys: d2 - 1 with the top bit flipped, so that the unsigned order of
@@ -218,7 +222,7 @@ DUEL_AVX2 static void duel_scan_pair(const duel_world *w, const duel_lanes *l, c
 /* duel_readings4 of four squared distances less one (unsigned; all ones:
  * none, reading 0) with AVX-512DQ's conversions between 64-bit integers and
  * doubles; the same values by the same argument */
-DUEL_AVX512 static inline __attribute__((always_inline)) __m256i duel_readings4_vl(__m256i d2m1)
+DUEL_AVX512 DUEL_INLINE __m256i duel_readings4_vl(__m256i d2m1)
 {
     const __m256i minus1 = _mm256_set1_epi64x(-1);
     __mmask8 some = _mm256_cmpneq_epu64_mask(d2m1, minus1);
@@ -233,7 +237,7 @@ DUEL_AVX512 static inline __attribute__((always_inline)) __m256i duel_readings4_
  * at the robot's centre wraps to the largest, none), the minimum unsigned
  * (vpminuq), the sector test into masks and the and-not of two masks
  * (kandnb) choosing the lanes each sector's minimum takes */
-DUEL_AVX512 static void duel_scan_pair_vl(const duel_world *w, const duel_lanes *l, const __m256i bx[5],
+DUEL_AVX512 DUEL_INLINE void duel_scan_pair_vl(const duel_world *w, const duel_lanes *l, const __m256i bx[5],
                                           const __m256i by[5], int64_t robot_d2, int64_t rd[12])
 {
     const __m256i rx = duel_lanes_of(w->robot[0].x, w->robot[1].x), ry = duel_lanes_of(w->robot[0].y, w->robot[1].y);
@@ -263,22 +267,18 @@ DUEL_AVX512 static void duel_scan_pair_vl(const duel_world *w, const duel_lanes 
                         duel_readings4_vl(_mm256_blend_epi32(best[4], _mm256_set1_epi64x(robot_d2 - 1), 0xF0)));
 }
 
-DUEL_AVX2 static void duel_sense_both_avx2(const duel_world *w, duel_lanes *lanes, int vl, nrt_q15 west[DUEL_N_INPUTS],
-                                           nrt_q15 east[DUEL_N_INPUTS])
+/* The inputs of both robots from the food readings rd (duel_scan_pair's)
+ * and the frames: the robot rangefinders, energy, wall (duel_sense_finish
+ * with the readings taken). d2 is the robots' squared distance. */
+DUEL_AVX2 DUEL_INLINE void duel_sense_end(const duel_world *w, const int32_t c[2], const int32_t s[2],
+                                          const __m256i bx[5], const __m256i by[5], const int64_t rd[12],
+                                          nrt_q15 west[DUEL_N_INPUTS], nrt_q15 east[DUEL_N_INPUTS])
 {
     const duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
-    int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy, rd[12], sec[4];
-    int32_t c[2], s[2];
+    int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy, sec[4];
     nrt_q15 *in[2], energy;
-    __m256i bx[5], by[5], m[5], rx, ry;
+    __m256i m[5], rx, ry;
     int side, k;
-    if (lanes->mask != w->food_mask)
-        duel_lanes_make(lanes, w);
-    duel_frames_of(w, c, s, bx, by);
-    if (vl)
-        duel_scan_pair_vl(w, lanes, bx, by, d2, rd);
-    else
-        duel_scan_pair(w, lanes, bx, by, d2, rd);
     /* the robot rangefinders' sector: the other robot is at (vx, vy) from
      * west, at (-vx, -vy) from east; the sector's number from the masks,
      * -(m[1] + 2 m[2] + 3 m[3] + 4 m[4]) (a mask is -1), none when v = 0 */
@@ -309,12 +309,48 @@ DUEL_AVX2 static void duel_sense_both_avx2(const duel_world *w, duel_lanes *lane
     }
 }
 
+/* the robots' squared distance, for the robot rangefinders */
+static int64_t duel_robots_d2(const duel_world *w)
+{
+    return duel_dist2(w->robot[DUEL_EAST].x, w->robot[DUEL_EAST].y, w->robot[DUEL_WEST].x, w->robot[DUEL_WEST].y);
+}
+
+DUEL_AVX2 static void duel_sense_both_avx2(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
+                                           nrt_q15 east[DUEL_N_INPUTS])
+{
+    int64_t rd[12];
+    int32_t c[2], s[2];
+    __m256i bx[5], by[5];
+    if (lanes->mask != w->food_mask)
+        duel_lanes_make(lanes, w);
+    duel_frames_of(w, c, s, bx, by);
+    duel_scan_pair(w, lanes, bx, by, duel_robots_d2(w), rd);
+    duel_sense_end(w, c, s, bx, by, rd, west, east);
+}
+
+/* duel_sense_both_avx2 with the AVX-512VL food scan */
+DUEL_AVX512 static void duel_sense_both_vl(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
+                                           nrt_q15 east[DUEL_N_INPUTS])
+{
+    int64_t rd[12];
+    int32_t c[2], s[2];
+    __m256i bx[5], by[5];
+    if (lanes->mask != w->food_mask)
+        duel_lanes_make(lanes, w);
+    duel_frames_of(w, c, s, bx, by);
+    duel_scan_pair_vl(w, lanes, bx, by, duel_robots_d2(w), rd);
+    duel_sense_end(w, c, s, bx, by, rd, west, east);
+}
+
 int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],
                     nrt_q15 east[DUEL_N_INPUTS])
 {
     if (lanes->level == DUEL_SIMD_NONE)
         return -1;
-    duel_sense_both_avx2(w, lanes, lanes->level == DUEL_SIMD_AVX512, west, east);
+    if (lanes->level == DUEL_SIMD_AVX512)
+        duel_sense_both_vl(w, lanes, west, east);
+    else
+        duel_sense_both_avx2(w, lanes, west, east);
     return 0;
 }
 
