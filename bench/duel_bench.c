@@ -64,17 +64,33 @@ static uint64_t db_checksum(uint64_t h, const duel_result *r)
     return h;
 }
 
-/* games on every configuration and side until min_seconds have passed */
-static double db_steps_per_second(db_pair *p, double min_seconds, uint64_t *steps_out)
+/* games on every configuration and side until min_seconds have passed:
+ * one at a time (duel_play), or two at once (duel_play2: game k and k + 1,
+ * the same two networks on swapped sides, as a host meets its opponents) */
+static double db_steps_per_second(db_pair *p, double min_seconds, int two, uint64_t *steps_out)
 {
     uint64_t steps = 0;
     double t0 = db_now(), t;
     int k = 0;
     do {
-        duel_result r;
-        duel_play(&p->c[k & 1], &p->c[(k + 1) & 1], (k / 2) % DUEL_CONFIGS, &r, NULL, NULL);
-        steps += r.steps;
-        k++;
+        if (two) {
+            duel_controller *west[2], *east[2];
+            duel_result r[2];
+            int config[2], j;
+            for (j = 0; j < 2; j++) {
+                west[j] = &p->c[(k + j) & 1];
+                east[j] = &p->c[(k + j + 1) & 1];
+                config[j] = ((k + j) / 2) % DUEL_CONFIGS;
+            }
+            duel_play2(west, east, config, r);
+            steps += r[0].steps + r[1].steps;
+            k += 2;
+        } else {
+            duel_result r;
+            duel_play(&p->c[k & 1], &p->c[(k + 1) & 1], (k / 2) % DUEL_CONFIGS, &r, NULL, NULL);
+            steps += r.steps;
+            k++;
+        }
         t = db_now() - t0;
     } while (t < min_seconds);
     *steps_out = steps;
@@ -86,7 +102,7 @@ int main(int argc, char **argv)
     neat_rng rng;
     db_pair p39, p202;
     uint64_t steps39, steps202;
-    double sps39, sps202, t0, cmp_s;
+    double sps39, sps202, two39, two202, t0, cmp_s;
     duel_tally tally;
     int callgrind_games = 0, callgrind_conns = 39, i, rc = 0;
     const char *blob_dir = NULL;
@@ -152,19 +168,24 @@ int main(int argc, char **argv)
                (unsigned long long)sum);
         goto done;
     }
-    sps39 = db_steps_per_second(&p39, 1.0, &steps39);
-    sps202 = db_steps_per_second(&p202, 1.0, &steps202);
+    sps39 = db_steps_per_second(&p39, 1.0, 0, &steps39);
+    sps202 = db_steps_per_second(&p202, 1.0, 0, &steps202);
+    two39 = db_steps_per_second(&p39, 1.0, 1, &steps39);
+    two202 = db_steps_per_second(&p202, 1.0, 1, &steps202);
     t0 = db_now();
     duel_compare(&p39.c[0], &p39.c[1], &tally);
     cmp_s = db_now() - t0;
     printf("39-connection networks:  %.0f game-steps/s (%.1f ns per robot-step)\n", sps39, 0.5e9 / sps39);
     printf("202-connection networks: %.0f game-steps/s (%.1f ns per robot-step)\n", sps202, 0.5e9 / sps202);
+    printf("two games at once (duel_play2), 39 / 202 connections: %.0f / %.0f game-steps/s (%.2f / %.2f times one at a time)\n",
+           two39, two202, two39 / sps39, two202 / sps202);
     printf("288-game comparison (39 connections): %.3f s, %.0f games/s (wins %u / %u, draws %u, timeouts %u)\n", cmp_s,
            288.0 / cmp_s, tally.wins_a, tally.wins_b, tally.draws, tally.timeouts);
     printf("sensing: %s\n", duel_simd_active() == DUEL_SIMD_AVX512 ? "AVX2 + AVX-512VL (duel_sense_avx2.c)"
                              : duel_simd_active() == DUEL_SIMD_AVX2 ? "AVX2 (duel_sense_avx2.c)" : "scalar");
-    printf("{\"game_steps_per_s_39\":%.0f,\"game_steps_per_s_202\":%.0f,\"games_per_s_288\":%.1f,"
-           "\"comparison_seconds\":%.4f}\n", sps39, sps202, 288.0 / cmp_s, cmp_s);
+    printf("{\"game_steps_per_s_39\":%.0f,\"game_steps_per_s_202\":%.0f,\"two_at_once_39\":%.0f,"
+           "\"two_at_once_202\":%.0f,\"games_per_s_288\":%.1f,\"comparison_seconds\":%.4f}\n",
+           sps39, sps202, two39, two202, 288.0 / cmp_s, cmp_s);
 done:
     for (i = 0; i < 2; i++) {
         neat_phenotype_free(&p39.ph[i]);

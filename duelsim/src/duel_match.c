@@ -45,6 +45,216 @@ DUEL_NOINLINE static void duel_traced_step(duel_world *w, nrt_q15 *const in[2], 
     trace(ud, &before, (const nrt_q15(*)[DUEL_N_INPUTS])in_copy, (const nrt_q15(*)[DUEL_N_OUTPUTS])out_copy, &ev);
 }
 
+#if DUEL_HAVE_AVX2
+/* One game in play on an x86-64 host: its world, its controllers' inputs
+ * and outputs, and the dense forms of its networks, which then hold their
+ * state. duel_play steps one; duel_play2 two, phase by phase. */
+typedef struct duel_game {
+    duel_world w;
+    duel_controller *c[2];
+    nrt_q15 in_buf[2][DUEL_N_INPUTS], out_buf[2][DUEL_N_OUTPUTS], *in[2];
+    const nrt_q15 *out[2];
+    int food_near;
+    duel_lanes lanes;
+    nrt_dense *dense[2];
+    int pair; /* both networks small: stepped together (nrt_dense_step2) */
+    nrt_dense dense_of[2];
+} duel_game;
+
+/* The game's start: world, networks reset, their dense forms made */
+static int duel_game_begin(duel_game *g, duel_controller *west, duel_controller *east, int food_config)
+{
+    int err, side;
+    if (west == NULL || east == NULL)
+        return DUEL_E_ARG;
+    /* one network state cannot drive two robots: load the blob twice */
+    if (west->net != NULL && west->net == east->net)
+        return DUEL_E_ARG;
+    if (!duel_controller_ok(west) || !duel_controller_ok(east))
+        return DUEL_E_NET;
+    err = duel_world_init(&g->w, food_config);
+    if (err)
+        return err;
+    g->c[DUEL_WEST] = west;
+    g->c[DUEL_EAST] = east;
+    for (side = 0; side < 2; side++)
+        if (g->c[side]->net != NULL)
+            nrt_reset(g->c[side]->net);
+    /* the same steps, faster for small networks (tests/duelsim/test_golden.c) */
+    duel_lanes_init(&g->lanes);
+    for (side = 0; side < 2; side++) {
+        g->dense[side] = NULL;
+        if (g->lanes.level != DUEL_SIMD_NONE && g->c[side]->net != NULL &&
+            nrt_dense_make(&g->dense_of[side], g->c[side]->net) == NRT_OK)
+            g->dense[side] = &g->dense_of[side];
+    }
+    g->pair = g->dense[DUEL_WEST] != NULL && g->dense[DUEL_EAST] != NULL &&
+              g->dense[DUEL_WEST]->rows <= NRT_DENSE_FEW && g->dense[DUEL_EAST]->rows <= NRT_DENSE_FEW;
+    return DUEL_OK;
+}
+
+/* 1. both robots sense the state at t; a network's sensors go straight
+ * into its input slots (a dense form's, when it has one) */
+static void duel_game_sense(duel_game *g)
+{
+    int side;
+    for (side = 0; side < 2; side++) {
+        const duel_controller *c = g->c[side];
+        if (g->dense[side] != NULL) {
+            g->in[side] = nrt_dense_inputs(g->dense[side]);
+            continue;
+        }
+        g->in[side] = c->net != NULL ? nrt_inputs(c->net) : g->in_buf[side];
+    }
+    if (duel_sense_both(&g->w, &g->lanes, g->in[DUEL_WEST], g->in[DUEL_EAST]) == 0)
+        return;
+    for (side = 0; side < 2; side++)
+        duel_sense(&g->w, side, g->in[side]);
+}
+
+/* 2. both networks propagate once (or the builtins act) */
+static void duel_game_think(duel_game *g)
+{
+    int side;
+    if (g->pair)
+        nrt_dense_step2(g->dense[DUEL_WEST], g->dense[DUEL_EAST]);
+    for (side = 0; side < 2; side++) {
+        if (g->dense[side] != NULL) {
+            if (!g->pair)
+                nrt_dense_step(g->dense[side]);
+            g->out[side] = nrt_dense_outputs(g->dense[side]);
+            continue;
+        }
+        g->out[side] = duel_act(g->c[side], g->in[side], g->out_buf[side]);
+    }
+    g->food_near = duel_food_near(g->in[DUEL_WEST]) || duel_food_near(g->in[DUEL_EAST]);
+}
+
+/* 3-6. the move and the rules (duel_world_step) */
+static void duel_game_move(duel_game *g, duel_trace_fn trace, void *ud)
+{
+    if (trace != NULL)
+        duel_traced_step(&g->w, g->in, g->out, g->food_near, trace, ud);
+    else
+        duel_world_step_food(&g->w, g->out[DUEL_WEST], g->out[DUEL_EAST], NULL, g->food_near);
+}
+
+/* The game's result; the networks end as nrt_step would have left them */
+static void duel_game_end(duel_game *g, duel_result *res)
+{
+    int side;
+    for (side = 0; side < 2; side++)
+        if (g->dense[side] != NULL)
+            nrt_dense_save(g->dense[side], g->c[side]->net);
+    res->outcome = g->w.outcome;
+    res->steps = g->w.t;
+    for (side = 0; side < 2; side++) {
+        res->energy[side] = g->w.robot[side].energy;
+        res->eaten[side] = g->w.robot[side].eaten;
+    }
+}
+
+int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
+              void *ud)
+{
+    duel_game g;
+    int err;
+    if (res == NULL)
+        return DUEL_E_ARG;
+    err = duel_game_begin(&g, west, east, food_config);
+    if (err)
+        return err;
+    while (g.w.outcome == DUEL_RUNNING) {
+        duel_game_sense(&g);
+        duel_game_think(&g);
+        duel_game_move(&g, trace, ud);
+    }
+    duel_game_end(&g, res);
+    return DUEL_OK;
+}
+
+static void duel_game_run(duel_game *g)
+{
+    while (g->w.outcome == DUEL_RUNNING) {
+        duel_game_sense(g);
+        duel_game_think(g);
+        duel_game_move(g, NULL, NULL);
+    }
+}
+
+/* Whether g steps network n (one the other game has too) in a dense form
+ * of its own, with its own copy of the state */
+static int duel_game_own_state(const duel_game *g, const nrt_net *n)
+{
+    int side;
+    for (side = 0; side < 2; side++)
+        if (g->c[side]->net == n)
+            return g->dense[side] != NULL;
+    return 1; /* not in this game */
+}
+
+/* Whether the two games can be played at the same time: each network they
+ * share is stepped through a state of its own in each (a dense form made
+ * from the reset network) */
+static int duel_games_apart(const duel_game g[2])
+{
+    int side;
+    for (side = 0; side < 2; side++) {
+        const nrt_net *n = g[1].c[side]->net;
+        if (n != NULL && (n == g[0].c[DUEL_WEST]->net || n == g[0].c[DUEL_EAST]->net) &&
+            (!duel_game_own_state(&g[0], n) || !duel_game_own_state(&g[1], n)))
+            return 0;
+    }
+    return 1;
+}
+
+int duel_play2(duel_controller *const west[2], duel_controller *const east[2], const int food_config[2],
+               duel_result res[2])
+{
+    duel_game g[2];
+    int err, k;
+    if (west == NULL || east == NULL || food_config == NULL || res == NULL)
+        return DUEL_E_ARG;
+    err = duel_game_begin(&g[0], west[0], east[0], food_config[0]);
+    if (err == DUEL_OK)
+        err = duel_game_begin(&g[1], west[1], east[1], food_config[1]);
+    if (err)
+        return err;
+    if (!duel_games_apart(g)) {
+        /* one after the other, as two calls of duel_play: game 1 starts
+         * again from the networks as game 0 leaves them */
+        duel_game_run(&g[0]);
+        duel_game_end(&g[0], &res[0]);
+        err = duel_game_begin(&g[1], west[1], east[1], food_config[1]);
+        if (err)
+            return err;
+        duel_game_run(&g[1]);
+        duel_game_end(&g[1], &res[1]);
+        return DUEL_OK;
+    }
+    /* Phase by phase: each game's step is one chain of dependent
+     * instructions (sense, propagate, move), and the processor overlaps
+     * the two games' chains. Either game's results are its own: nothing
+     * passes between them. */
+    while (g[0].w.outcome == DUEL_RUNNING && g[1].w.outcome == DUEL_RUNNING) {
+        duel_game_sense(&g[0]);
+        duel_game_sense(&g[1]);
+        duel_game_think(&g[0]);
+        duel_game_think(&g[1]);
+        duel_game_move(&g[0], NULL, NULL);
+        duel_game_move(&g[1], NULL, NULL);
+    }
+    /* the longer game alone; the networks' states saved in the order of
+     * two duel_play calls */
+    for (k = 0; k < 2; k++) {
+        duel_game_run(&g[k]);
+        duel_game_end(&g[k], &res[k]);
+    }
+    return DUEL_OK;
+}
+
+#else /* no dense forms (the firmware, any host but x86-64): the loop as it was, unchanged */
+
 int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
               void *ud)
 {
@@ -52,12 +262,6 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     nrt_q15 in_buf[2][DUEL_N_INPUTS], out_buf[2][DUEL_N_OUTPUTS], *in[2];
     const nrt_q15 *out[2];
     int food_near;
-#if DUEL_HAVE_AVX2
-    duel_lanes lanes;
-    nrt_dense *dense[2] = {NULL, NULL};
-    nrt_dense dense_of[2];
-    int pair;
-#endif
     int err, side;
 
     if (res == NULL || west == NULL || east == NULL)
@@ -74,63 +278,21 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         nrt_reset(west->net);
     if (east->net != NULL)
         nrt_reset(east->net);
-#if DUEL_HAVE_AVX2
-    /* the same steps, faster for small networks (tests/duelsim/test_golden.c) */
-    duel_lanes_init(&lanes);
-    if (lanes.level != DUEL_SIMD_NONE) {
-        if (west->net != NULL && nrt_dense_make(&dense_of[DUEL_WEST], west->net) == NRT_OK)
-            dense[DUEL_WEST] = &dense_of[DUEL_WEST];
-        if (east->net != NULL && nrt_dense_make(&dense_of[DUEL_EAST], east->net) == NRT_OK)
-            dense[DUEL_EAST] = &dense_of[DUEL_EAST];
-    }
-    /* two small networks step together (nrt_dense_step2) */
-    pair = dense[DUEL_WEST] != NULL && dense[DUEL_EAST] != NULL && dense[DUEL_WEST]->rows <= NRT_DENSE_FEW &&
-           dense[DUEL_EAST]->rows <= NRT_DENSE_FEW;
-#endif
     while (w.outcome == DUEL_RUNNING) {
-        /* 1. both sense the state at t; 2. both networks propagate once */
-        /* a network's sensors go straight into its input slots */
-#if DUEL_HAVE_AVX2
-        /* (a dense form holds its network's state) */
-        for (side = 0; side < 2; side++) {
-            const duel_controller *c = side == DUEL_WEST ? west : east;
-            in[side] = dense[side] != NULL ? nrt_dense_inputs(dense[side])
-                                           : (c->net != NULL ? nrt_inputs(c->net) : in_buf[side]);
-        }
-        if (duel_sense_both(&w, &lanes, in[DUEL_WEST], in[DUEL_EAST]) != 0)
-            for (side = 0; side < 2; side++)
-                duel_sense(&w, side, in[side]);
-        if (pair)
-            nrt_dense_step2(dense[DUEL_WEST], dense[DUEL_EAST]);
-        for (side = 0; side < 2; side++)
-            if (dense[side] != NULL) {
-                if (!pair)
-                    nrt_dense_step(dense[side]);
-                out[side] = nrt_dense_outputs(dense[side]);
-            } else {
-                out[side] = duel_act(side == DUEL_WEST ? west : east, in[side], out_buf[side]);
-            }
-#else
+        /* 1. both sense the state at t; 2. both networks propagate once;
+         * a network's sensors go straight into its input slots */
         in[DUEL_WEST] = west->net != NULL ? nrt_inputs(west->net) : in_buf[DUEL_WEST];
         in[DUEL_EAST] = east->net != NULL ? nrt_inputs(east->net) : in_buf[DUEL_EAST];
         duel_sense(&w, DUEL_WEST, in[DUEL_WEST]);
         duel_sense(&w, DUEL_EAST, in[DUEL_EAST]);
         out[DUEL_WEST] = duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
         out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
-#endif
         food_near = duel_food_near(in[DUEL_WEST]) || duel_food_near(in[DUEL_EAST]);
         if (trace != NULL)
             duel_traced_step(&w, in, out, food_near, trace, ud);
         else
             duel_world_step_food(&w, out[DUEL_WEST], out[DUEL_EAST], NULL, food_near);
     }
-#if DUEL_HAVE_AVX2
-    /* the networks end as nrt_step would have left them */
-    if (dense[DUEL_WEST] != NULL)
-        nrt_dense_save(dense[DUEL_WEST], west->net);
-    if (dense[DUEL_EAST] != NULL)
-        nrt_dense_save(dense[DUEL_EAST], east->net);
-#endif
     res->outcome = w.outcome;
     res->steps = w.t;
     for (side = 0; side < 2; side++) {
@@ -139,6 +301,23 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
     }
     return DUEL_OK;
 }
+
+/* the networks the two games share have one state: one game after the other */
+int duel_play2(duel_controller *const west[2], duel_controller *const east[2], const int food_config[2],
+               duel_result res[2])
+{
+    int err, k;
+    if (west == NULL || east == NULL || food_config == NULL || res == NULL)
+        return DUEL_E_ARG;
+    for (k = 0; k < 2; k++) {
+        err = duel_play(west[k], east[k], food_config[k], &res[k], NULL, NULL);
+        if (err)
+            return err;
+    }
+    return DUEL_OK;
+}
+
+#endif
 
 int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
 {

@@ -478,6 +478,117 @@ static void tg_games(void)
     tg_check("untraced games", untraced, 0xf065414941a055caull);
 }
 
+/* The states of the seven networks (and a twin), for comparing what two
+ * ways of playing leave in them */
+typedef struct tg_states {
+    nrt_q15 act[TG_NETS + 1][NRT_MAX_NODES];
+    uint16_t cur[TG_NETS + 1];
+} tg_states;
+
+static void tg_save_states(tg_states *st, const nrt_net *twin)
+{
+    int i;
+    memset(st, 0, sizeof *st);
+    for (i = 0; i <= TG_NETS; i++) {
+        const nrt_net *n = i < TG_NETS ? &tg_nets[i].net : twin;
+        st->cur[i] = n->cur;
+        memcpy(st->act[i], n->act[n->cur], 2u * n->n_nodes);
+    }
+}
+
+/* duel_play2 against two calls of duel_play for pairs of games: a host
+ * against two opponents (on either side), the same two controllers on both
+ * sides, two games sharing nothing, builtins, and the networks too large for
+ * a dense form (played one after the other); the results and the networks'
+ * states after each pair must be the same. Then the errors. */
+static void tg_pairs(void)
+{
+    static tg_net twin;
+    static tg_states seq, two;
+    int n = DUEL_N_BUILTINS + TG_NETS, i, pairs = 0;
+    tg_make_duel_nets();
+    assert_int_equal(nrt_load(&twin.net, tg_nets[0].blob, tg_nets[0].len, twin.mem, sizeof twin.mem), NRT_OK);
+    tg_rng = 0x5EED5EED5EED5EEDull;
+    for (i = 0; i < 400; i++) {
+        duel_controller c[4], spare, *west[2], *east[2];
+        duel_result r_seq[2], r_two[2];
+        int config[2], k, pick[4];
+        for (k = 0; k < 4; k++) {
+            pick[k] = (int)(tg_next() % (uint64_t)n);
+            c[k] = tg_controller(pick[k]);
+        }
+        spare.net = &twin.net;
+        spare.builtin = 0;
+        switch (i % 4) {
+        case 0: /* a host (c0) against two opponents */
+            west[0] = &c[0];
+            east[0] = &c[1];
+            west[1] = (i & 4) ? &c[0] : &c[2];
+            east[1] = (i & 4) ? &c[2] : &c[0];
+            break;
+        case 1: /* the same two on both sides */
+            west[0] = east[1] = &c[0];
+            east[0] = west[1] = &c[1];
+            break;
+        case 2: /* nothing shared (or, by the draw, something) */
+            west[0] = &c[0];
+            east[0] = &c[1];
+            west[1] = &c[2];
+            east[1] = &c[3];
+            break;
+        default: /* the same game twice */
+            west[0] = west[1] = &c[0];
+            east[0] = east[1] = &c[1];
+            break;
+        }
+        /* one game's two controllers may not share a network: then the
+         * east one is the twin of network 0 */
+        for (k = 0; k < 2; k++)
+            if (west[k]->net != NULL && west[k]->net == east[k]->net)
+                east[k] = &spare;
+        for (k = 0; k < 2; k++)
+            config[k] = (int)(tg_next() % (DUEL_CONFIGS + 1)) - 1;
+        for (k = 0; k < 2; k++)
+            assert_int_equal(duel_play(west[k], east[k], config[k], &r_seq[k], NULL, NULL), DUEL_OK);
+        tg_save_states(&seq, &twin.net);
+        assert_int_equal(duel_play2(west, east, config, r_two), DUEL_OK);
+        tg_save_states(&two, &twin.net);
+        for (k = 0; k < 2; k++) {
+            assert_int_equal(r_two[k].outcome, r_seq[k].outcome);
+            assert_int_equal(r_two[k].steps, r_seq[k].steps);
+            assert_memory_equal(r_two[k].energy, r_seq[k].energy, sizeof r_seq[k].energy);
+            assert_memory_equal(r_two[k].eaten, r_seq[k].eaten, sizeof r_seq[k].eaten);
+        }
+        assert_memory_equal(&two, &seq, sizeof seq);
+        pairs++;
+    }
+    print_message("%d pairs of games: duel_play2 = duel_play twice\n", pairs);
+    {
+        duel_controller a = tg_controller(DUEL_N_BUILTINS), b = tg_controller(DUEL_N_BUILTINS + 1);
+        duel_controller *west[2] = {&a, &a}, *east[2] = {&b, &a};
+        int config[2] = {0, 0};
+        duel_result r[2];
+        /* game 1's two controllers share one network */
+        assert_int_equal(duel_play2(west, east, config, r), DUEL_E_ARG);
+        assert_int_equal(duel_play2(NULL, east, config, r), DUEL_E_ARG);
+        east[1] = &b;
+        config[1] = DUEL_CONFIGS;
+        assert_int_equal(duel_play2(west, east, config, r), DUEL_E_ARG);
+    }
+}
+
+static void test_golden_pairs(void **state)
+{
+    int level;
+    (void)state;
+    for (level = tg_simd_best(); level >= DUEL_SIMD_NONE; level--) {
+        duel_simd_allow(level);
+        print_message("pairs with the %s sensing\n", tg_simd_name[level]);
+        tg_pairs();
+    }
+    duel_simd_allow(DUEL_SIMD_AVX512);
+}
+
 static void test_golden_games(void **state)
 {
     int level;
@@ -499,6 +610,7 @@ int main(void)
         cmocka_unit_test(test_golden_simd_thresholds),
         cmocka_unit_test(test_golden_steps),
         cmocka_unit_test(test_golden_games),
+        cmocka_unit_test(test_golden_pairs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

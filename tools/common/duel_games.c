@@ -1,4 +1,4 @@
-/* duel_games.c - plays batches of coevolution games on worker threads, every network through the blob and the runtime (and, with a remote executor from tools/mpi, on other processes too). */
+/* duel_games.c - plays batches of coevolution games on worker threads, two at a time, every network through the blob and the runtime (and, with a remote executor from tools/mpi, on other processes too). */
 #define _POSIX_C_SOURCE 200809L
 #include <pthread.h>
 #include <stdlib.h>
@@ -47,11 +47,12 @@ typedef struct duel_seat {
  * host (perf: the loads' checksums were 2 % of a paper-scale generation). */
 #define DUEL_KEPT 16u
 
-/* One worker's networks: the host (a), and the opponents (b) it has met,
- * reloaded only when a player is not among them. Per batch: a key is a
- * pointer, which a later batch may reuse for another network. */
+/* One worker's networks: the hosts (a) of the two games it plays at once,
+ * and the opponents (b) it has met, reloaded only when a player is not
+ * among them. Per batch: a key is a pointer, which a later batch may reuse
+ * for another network. */
 typedef struct duel_seats {
-    duel_seat host, kept[DUEL_KEPT];
+    duel_seat host[2], kept[DUEL_KEPT];
     uint32_t next; /* the kept seat to load into next, round robin */
 } duel_seats;
 
@@ -72,65 +73,144 @@ static int duel_seat_load(duel_seat *s, const duel_games *dg, const void *key)
     return err;
 }
 
-/* The kept seat holding key, loaded into the next one if none does. */
-static duel_seat *duel_seat_kept(duel_seats *ss, const duel_games *dg, const void *key, int *err)
+/* The host seat holding key, else key loaded into the one that is not
+ * busy (the other game's of a pair; NULL: none is). */
+static duel_seat *duel_seat_host(duel_seats *ss, const duel_games *dg, const void *key, const duel_seat *busy,
+                                 int *err)
+{
+    duel_seat *s = busy == &ss->host[0] ? &ss->host[1] : &ss->host[0];
+    if (ss->host[0].key == key)
+        return &ss->host[0];
+    if (ss->host[1].key == key)
+        return &ss->host[1];
+    *err = duel_seat_load(s, dg, key);
+    return s;
+}
+
+/* The kept seat holding key, loaded into the next one that is not busy if
+ * none does. */
+static duel_seat *duel_seat_kept(duel_seats *ss, const duel_games *dg, const void *key, const duel_seat *busy,
+                                 int *err)
 {
     duel_seat *s;
     uint32_t k;
     for (k = 0; k < DUEL_KEPT; k++)
         if (ss->kept[k].key == key)
             return &ss->kept[k];
+    if (&ss->kept[ss->next] == busy)
+        ss->next = (ss->next + 1u) % DUEL_KEPT;
     s = &ss->kept[ss->next];
     ss->next = (ss->next + 1u) % DUEL_KEPT;
     *err = duel_seat_load(s, dg, key);
     return s;
 }
 
-/* Game i of the batch: its two players, its food, a's side; its result set. */
-static int duel_play_one(duel_games *dg, duel_seats *ss, size_t i, uint32_t *steps)
-{
-    duel_seat *opp;
+/* Game i of the batch set up: its players loaded (into seats other than
+ * the busy ones, those of a game being played with it), its sides and
+ * food. */
+typedef struct duel_setup {
+    duel_seat *host, *opp;
     duel_controller west, east;
-    duel_result res;
+    int config, a_first;
+} duel_setup;
+
+static int duel_setup_game(duel_games *dg, duel_seats *ss, size_t i, const duel_setup *busy, duel_setup *g)
+{
     const void *a, *b;
-    int32_t config;
-    int a_first, err;
-    int8_t result;
+    int err = 0;
     if (dg->games != NULL) {
         a = dg->games[i].a;
         b = dg->games[i].b;
-        config = dg->games[i].config;
-        a_first = dg->games[i].a_first;
+        g->config = dg->games[i].config;
+        g->a_first = dg->games[i].a_first;
     } else {
         a = &dg->nets[dg->matches[i].a];
         b = &dg->nets[dg->matches[i].b];
-        config = dg->matches[i].config;
-        a_first = dg->matches[i].a_first;
+        g->config = dg->matches[i].config;
+        g->a_first = dg->matches[i].a_first;
     }
-    err = duel_seat_load(&ss->host, dg, a);
+    if (g->config < 0)
+        g->config = DUEL_TRAINING;
+    g->host = duel_seat_host(ss, dg, a, busy != NULL ? busy->host : NULL, &err);
     if (err)
         return err;
-    opp = duel_seat_kept(ss, dg, b, &err);
+    g->opp = duel_seat_kept(ss, dg, b, busy != NULL ? busy->opp : NULL, &err);
     if (err)
         return err;
-    memset(&west, 0, sizeof west);
-    memset(&east, 0, sizeof east);
-    west.net = a_first ? &ss->host.ph.net : &opp->ph.net;
-    east.net = a_first ? &opp->ph.net : &ss->host.ph.net;
-    err = duel_play(&west, &east, config < 0 ? DUEL_TRAINING : config, &res, NULL, NULL);
-    if (err)
-        return err - 200;
-    *steps = res.steps;
-    if (res.outcome == DUEL_WEST_WINS)
-        result = a_first ? 1 : -1;
-    else if (res.outcome == DUEL_EAST_WINS)
-        result = a_first ? -1 : 1;
+    memset(&g->west, 0, sizeof g->west);
+    memset(&g->east, 0, sizeof g->east);
+    g->west.net = g->a_first ? &g->host->ph.net : &g->opp->ph.net;
+    g->east.net = g->a_first ? &g->opp->ph.net : &g->host->ph.net;
+    return 0;
+}
+
+/* Game i's result, for a (1 won, -1 lost, 0 neither) */
+static void duel_record_game(duel_games *dg, size_t i, const duel_setup *g, const duel_result *res)
+{
+    int8_t result;
+    if (res->outcome == DUEL_WEST_WINS)
+        result = g->a_first ? 1 : -1;
+    else if (res->outcome == DUEL_EAST_WINS)
+        result = g->a_first ? -1 : 1;
     else
         result = 0;
     if (dg->games != NULL)
         dg->games[i].result = result;
     else
         dg->matches[i].result = result;
+}
+
+/* Game i of the batch: played, its result set. */
+static int duel_play_one(duel_games *dg, duel_seats *ss, size_t i, uint32_t *steps)
+{
+    duel_setup g;
+    duel_result res;
+    int err = duel_setup_game(dg, ss, i, NULL, &g);
+    if (err)
+        return err;
+    err = duel_play(&g.west, &g.east, g.config, &res, NULL, NULL);
+    if (err)
+        return err - 200;
+    *steps = res.steps;
+    duel_record_game(dg, i, &g, &res);
+    return 0;
+}
+
+/* Games i and i + 1 at once (duel_play2: the same results, faster), or on
+ * a failure one by one, so that the error and *at (the failing game) are
+ * those of duel_play_one. */
+static int duel_play_two(duel_games *dg, duel_seats *ss, size_t i, uint32_t *steps, size_t *at)
+{
+    duel_setup g[2];
+    duel_result res[2];
+    duel_controller *west[2], *east[2];
+    int config[2], err, k;
+    err = duel_setup_game(dg, ss, i, NULL, &g[0]);
+    if (err == 0)
+        err = duel_setup_game(dg, ss, i + 1, &g[0], &g[1]);
+    if (err == 0) {
+        for (k = 0; k < 2; k++) {
+            west[k] = &g[k].west;
+            east[k] = &g[k].east;
+            config[k] = g[k].config;
+        }
+        err = duel_play2(west, east, config, res);
+    }
+    if (err == 0) {
+        for (k = 0; k < 2; k++)
+            duel_record_game(dg, i + (size_t)k, &g[k], &res[k]);
+        *steps = res[0].steps + res[1].steps;
+        return 0;
+    }
+    *steps = 0;
+    for (k = 0; k < 2; k++) {
+        uint32_t s = 0;
+        *at = i + (size_t)k;
+        err = duel_play_one(dg, ss, *at, &s);
+        if (err)
+            return err;
+        *steps += s;
+    }
     return 0;
 }
 
@@ -156,8 +236,10 @@ static void *duel_worker(void *arg)
         pthread_mutex_unlock(&dg->lock);
         return NULL;
     }
-    neat_phenotype_init(&ss->host.ph, NULL);
-    ss->host.key = NULL;
+    for (k = 0; k < 2; k++) {
+        neat_phenotype_init(&ss->host[k].ph, NULL);
+        ss->host[k].key = NULL;
+    }
     for (k = 0; k < DUEL_KEPT; k++) {
         neat_phenotype_init(&ss->kept[k].ph, NULL);
         ss->kept[k].key = NULL;
@@ -174,23 +256,28 @@ static void *duel_worker(void *arg)
         pthread_mutex_unlock(&dg->lock);
         if (from >= to)
             break;
-        for (i = from; i < to; i++) {
+        for (i = from; i < to;) {
+            /* two games at a time (a chunk's games are one host's, mostly) */
             uint32_t s = 0;
-            int err = duel_play_one(dg, ss, i, &s);
+            size_t at = i, n = i + 1 < to ? 2 : 1;
+            int err = n == 2 ? duel_play_two(dg, ss, i, &s, &at) : duel_play_one(dg, ss, i, &s);
             steps += s;
             if (err) {
                 pthread_mutex_lock(&dg->lock);
-                duel_fail_locked(dg, i, err);
+                duel_fail_locked(dg, at, err);
                 pthread_mutex_unlock(&dg->lock);
+                i = at;
                 break;
             }
+            i += n;
         }
         pthread_mutex_lock(&dg->lock);
         dg->done += i - from;
         pthread_cond_signal(&dg->moved);
         pthread_mutex_unlock(&dg->lock);
     }
-    neat_phenotype_free(&ss->host.ph);
+    for (k = 0; k < 2; k++)
+        neat_phenotype_free(&ss->host[k].ph);
     for (k = 0; k < DUEL_KEPT; k++)
         neat_phenotype_free(&ss->kept[k].ph);
     free(ss);
