@@ -96,9 +96,10 @@ experiment)
   echo "experiment: ok"
   ;;
 faults)
-  "$duel" run --config "$cfg" --out ref --quiet --generations 14
+  # 40 generations: mpirun takes about a second to pass Ctrl-C on, 14 generations on this machine (below)
+  "$duel" run --config "$cfg" --out ref --quiet --generations 40
   # a rank killed in the middle of a run ends the job at once, with mpirun's line naming it
-  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out K --generations 14 --quiet 2> k.err & job=$!
+  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out K --generations 40 --quiet 2> k.err & job=$!
   wait_gens K $job 4
   kill -9 "$(rank_pid 1 "run --config $cfg --out K")"
   start=$SECONDS rc=0
@@ -110,7 +111,7 @@ faults)
   "${mpi[@]}" -np 2 "$duel" resume K --quiet
   same_run ref K
   # Ctrl-C to mpirun: rank 0 finishes the generation, saves it and releases the others
-  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out I --generations 14 2> i.err & job=$!
+  "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out I --generations 40 2> i.err & job=$!
   wait_gens I $job 2
   kill -INT $job
   wait $job || true
