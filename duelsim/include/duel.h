@@ -159,7 +159,8 @@ DUEL_API int duel_play(duel_controller *west, duel_controller *east, int food_co
  * (results, and the networks' states after). Faster on x86-64 hosts, where
  * the two games' steps interleave (docs/duelsim.md); the two games may
  * share controllers (a host meeting two opponents), one game's two
- * controllers may not share a network (DUEL_E_ARG). No trace. */
+ * controllers may not share a network (DUEL_E_ARG). No trace. On an error
+ * neither result is set: duel_play each game to learn which one fails. */
 DUEL_API int duel_play2(duel_controller *const west[2], duel_controller *const east[2], const int food_config[2],
                         duel_result res[2]);
 
