@@ -60,6 +60,8 @@ bad)
   expect_bad "where" experiment ok.ini
   expect_bad "unknown option '--frobnicate'" experiment ok.ini --out e --frobnicate
   expect_bad "no plan.ini" experiment report .
+  # a directory path too long for plan.ini to be appended (it used to be cut and another file read)
+  expect_bad "path is longer than 4190 bytes" experiment report "$(printf 'd/%.0s' $(seq 2100))"
   mkdir full && touch full/x
   mkplan ok2.ini
   expect_bad "not empty and not an experiment directory" experiment ok2.ini --out full

@@ -345,9 +345,14 @@ int duel_plan_load_dir(duel_plan **out, const char *dir, char *err, size_t err_l
 {
     char path[4200];
     struct stat st;
-    snprintf(path, sizeof path, "%s/plan.ini", dir);
+    int n = snprintf(path, sizeof path, "%s/plan.ini", dir);
+    *out = NULL;
+    if (n < 0 || (size_t)n >= sizeof path) {
+        snprintf(err, err_len, "%.64s...: the experiment directory's path is longer than %zu bytes", dir,
+                 sizeof path - sizeof "/plan.ini");
+        return -1;
+    }
     if (stat(path, &st) != 0 && errno == ENOENT) {
-        *out = NULL;
         snprintf(err, err_len, "%s: not an experiment directory (no plan.ini)", dir);
         return -1;
     }
@@ -398,8 +403,16 @@ char *duel_plan_text(const duel_plan *p)
 
 int duel_plan_save(const duel_plan *p, const char *dir)
 {
-    char path[4200], *text = duel_plan_text(p);
+    char path[4200], *text;
     uint32_t i;
+    /* Room for the longest file name below, so no snprintf here can truncate (a truncated path would
+       write the wrong file); duel_exp passes ".", so this guards other callers. */
+    if (strlen(dir) + sizeof "/configs/" + DUEL_PLAN_MAX_NAME + sizeof ".ini" > sizeof path) {
+        fprintf(stderr, "duel_evolve: experiment: %.64s...: a directory path longer than %zu bytes\n", dir,
+                sizeof path - sizeof "/configs/" - DUEL_PLAN_MAX_NAME - sizeof ".ini");
+        return -1;
+    }
+    text = duel_plan_text(p);
     snprintf(path, sizeof path, "%s/configs", dir);
     if (text == NULL || duel_mkdir(path) != 0) {
         fprintf(stderr, "duel_evolve: experiment: %s: %s\n", path, text == NULL ? "out of memory" : strerror(errno));
