@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The whole test suite: unit tests (normal and ASan+UBSan builds), every decoder's fuzzer,
+# The whole test suite: unit tests (normal, Release and ASan+UBSan builds), every decoder's fuzzer,
 # the Cortex-M0+ cross build of the runtime with its sizes, the firmware figures under QEMU, and a
 # short benchmark smoke run.
 set -euo pipefail
@@ -20,7 +20,12 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG
 ninja -C build-asan
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
-echo "== identical duel traces from the -O3, -O2 and -O1 sanitizer builds"
+echo "== Release build (-O3 for every library, as a packager builds it): warnings as errors, the core unit tests"
+cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release -DNEAT_TOOLS=ON >/dev/null
+ninja -C build-release
+ctest --test-dir build-release --output-on-failure -j "$jobs" -R '^(libneat|runtime|duelsim)/'
+
+echo "== identical duel traces from the Release, -O3, -O2 and -O1 sanitizer builds"
 cmake -S . -B build-o2 -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNEAT_DUELSIM_O3=OFF -DNEAT_TESTS=OFF >/dev/null
 ninja -C build-o2 duel_evolve
 mkdir -p build/nets
@@ -35,6 +40,9 @@ for game in "builtin:forager-hunter builtin:forager --food 0" "builtin:forager b
   ./build-o2/bin/duel_evolve play $game --trace build/trace-o2.csv > /dev/null
   # shellcheck disable=SC2086
   ./build-asan/bin/duel_evolve play $game --trace build/trace-o1.csv > /dev/null
+  # shellcheck disable=SC2086
+  ./build-release/bin/duel_evolve play $game --trace build/trace-release.csv > /dev/null
+  cmp build/trace-o3.csv build/trace-release.csv
   cmp build/trace-o3.csv build/trace-o2.csv
   cmp build/trace-o3.csv build/trace-o1.csv
 done
