@@ -156,24 +156,51 @@ static inline uint32_t duel_isqrt32(uint32_t x)
     return r;
 }
 
+/* World v1's rules (duel_rules.c; duel_rules_v1() outside the library) */
+extern const duel_rules duel_v1_rules;
+
+/* The world's rules: NULL (a world made by hand) is v1. */
+static inline const duel_rules *duel_rules_of(const duel_world *w)
+{
+    return w->rules != NULL ? w->rules : &duel_v1_rules;
+}
+
+/* duel_world_init_rules without the check: rules already checked. */
+int duel_world_start(duel_world *w, const duel_rules *r, int food_config);
+
 /* duel_world_step, the food tested only when food_near: 0 promises that no
  * item can be within the eating distance after this move (duel_play knows
- * it from the food readings, duel_food_near). */
+ * it from the food readings, duel_food_near). w->rules must be set (every
+ * world duel_world_start made). */
 int duel_world_step_food(duel_world *w, const nrt_q15 out_west[DUEL_N_OUTPUTS],
                          const nrt_q15 out_east[DUEL_N_OUTPUTS], duel_event *ev, int food_near);
 
-/* Whether a robot whose food readings (inputs 1-5) these are may be within
- * the eating distance of an item after its next move. A reading r < 32113 is
- * round(d / 1700) >= 656 in Q16.16, so d >= 655.5 * 1700 / 65536 > 17.003
- * units; a move is at most 1.33 units (the clamp to the board only shortens
- * it), so every item stays beyond 15.67, above the eating distance of 15. An
- * item at the robot's very centre gives no reading, but cannot be there: it
- * would have been within 15 after the previous move and eaten then (or that
- * move's readings were not all below 32113), and no item is at a start
- * position. */
-static inline int duel_food_near(const nrt_q15 in[DUEL_N_INPUTS])
+/* The food reading below which no item can be within the eating distance
+ * after the robot's next move. A food reading v < T is 32768 - (n + 1) / 2
+ * with n = floor(d / food_range) (d in Q16.16) at least 65537 - 2T, or 0 for
+ * an item out of range (n >= 65536); either way d >= (65537 - 2T) range.
+ * A move is at most 1.33 units (87160 in Q16.16, and one more for the
+ * rounding of each axis; the clamp to the board only shortens it), so T is
+ * the largest with (65537 - 2T) range >= eat_dist + 87162: every item then
+ * stays at or beyond the eating distance. 0 (every step tests the food)
+ * when the range is too short for the readings to tell. World v1: 32138.
+ * An item at the robot's very centre gives no reading, but cannot be there:
+ * it would have been within the eating distance after the previous move and
+ * eaten then (or that move's readings were not all below T), and no item
+ * is within it of a start position (duel_rules_check). */
+static inline nrt_q15 duel_food_near_limit(const duel_rules *r)
 {
-    return in[1] >= 32113 || in[2] >= 32113 || in[3] >= 32113 || in[4] >= 32113 || in[5] >= 32113;
+    /* 32-bit: eat_dist is at most 150 units (duel_rules_check) */
+    uint32_t need = (uint32_t)r->eat_dist + 87162u, n = (need + r->food_range - 1u) / r->food_range;
+    return (nrt_q15)(n < 65536u ? (65537u - n) / 2u : 0u);
+}
+
+/* Whether a robot whose food readings (inputs 1-5) these are may be within
+ * the eating distance of an item after its next move (limit:
+ * duel_food_near_limit). */
+static inline int duel_food_near(const nrt_q15 in[DUEL_N_INPUTS], nrt_q15 limit)
+{
+    return in[1] >= limit || in[2] >= limit || in[3] >= limit || in[4] >= limit || in[5] >= limit;
 }
 
 /* A function kept out of its caller: its locals then take no room in the
@@ -201,16 +228,16 @@ typedef struct duel_lanes {
     int level;      /* the sensing path (enum duel_simd), read once per game */
 #if DUEL_HAVE_AVX2
     int64_t x[(DUEL_MAX_FOOD + 1) / 2][4], y[(DUEL_MAX_FOOD + 1) / 2][4];
+    /* the readings' division by the range, floor(r / range) = r * mul >>
+     * shift, per lane: [0] four food lanes, [1] food, food, robot, robot */
+    int64_t mul[2][4], shift[2][4];
 #endif
 } duel_lanes;
 
-/* A game's lanes, at its start: the processor's features read once per
- * game, not per step (inline: the firmware has no use for it) */
-static inline void duel_lanes_init(duel_lanes *lanes)
-{
-    lanes->mask = ~0u;
-    lanes->level = duel_simd_active();
-}
+/* A game's lanes, at its start, for its rules: the processor's features
+ * read once per game, not per step, and the readings' divisors (the
+ * firmware has no use for them) */
+void duel_lanes_init(duel_lanes *lanes, const duel_rules *r);
 
 /* Both robots' inputs, exactly as duel_sense gives them, with AVX2: 0, or
  * -1 when this build or processor has no AVX2 path (then duel_sense twice).

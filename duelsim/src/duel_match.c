@@ -1,4 +1,4 @@
-/* duel_match.c - one game between two controllers, and the 288-game comparison of spec v1. */
+/* duel_match.c - one game between two controllers under a world's rules, and the 288-game comparison. */
 #include <string.h>
 
 #include "duel_internal.h"
@@ -55,6 +55,7 @@ typedef struct duel_game {
     nrt_q15 in_buf[2][DUEL_N_INPUTS], out_buf[2][DUEL_N_OUTPUTS], *in[2];
     const nrt_q15 *out[2];
     int food_near;
+    nrt_q15 near_limit; /* duel_food_near_limit of the game's rules */
     duel_lanes lanes;
     nrt_dense *dense[2];
     int pair; /* both networks small: stepped together (nrt_dense_step2) */
@@ -62,7 +63,8 @@ typedef struct duel_game {
 } duel_game;
 
 /* The game's start: world, networks reset, their dense forms made */
-static int duel_game_begin(duel_game *g, duel_controller *west, duel_controller *east, int food_config)
+static int duel_game_begin(duel_game *g, const duel_rules *rules, duel_controller *west, duel_controller *east,
+                           int food_config)
 {
     int err, side;
     if (west == NULL || east == NULL)
@@ -72,16 +74,17 @@ static int duel_game_begin(duel_game *g, duel_controller *west, duel_controller 
         return DUEL_E_ARG;
     if (!duel_controller_ok(west) || !duel_controller_ok(east))
         return DUEL_E_NET;
-    err = duel_world_init(&g->w, food_config);
+    err = duel_world_start(&g->w, rules, food_config);
     if (err)
         return err;
+    g->near_limit = duel_food_near_limit(rules);
     g->c[DUEL_WEST] = west;
     g->c[DUEL_EAST] = east;
     for (side = 0; side < 2; side++)
         if (g->c[side]->net != NULL)
             nrt_reset(g->c[side]->net);
     /* the same steps, faster for small networks (tests/duelsim/test_golden.c) */
-    duel_lanes_init(&g->lanes);
+    duel_lanes_init(&g->lanes, rules);
     for (side = 0; side < 2; side++) {
         g->dense[side] = NULL;
         if (g->lanes.level != DUEL_SIMD_NONE && g->c[side]->net != NULL &&
@@ -127,7 +130,7 @@ static void duel_game_think(duel_game *g)
         }
         g->out[side] = duel_act(g->c[side], g->in[side], g->out_buf[side]);
     }
-    g->food_near = duel_food_near(g->in[DUEL_WEST]) || duel_food_near(g->in[DUEL_EAST]);
+    g->food_near = duel_food_near(g->in[DUEL_WEST], g->near_limit) || duel_food_near(g->in[DUEL_EAST], g->near_limit);
 }
 
 /* 3-6. the move and the rules (duel_world_step) */
@@ -154,14 +157,14 @@ static void duel_game_end(duel_game *g, duel_result *res)
     }
 }
 
-int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
-              void *ud)
+static int duel_play_in(const duel_rules *rules, duel_controller *west, duel_controller *east, int food_config,
+                        duel_result *res, duel_trace_fn trace, void *ud)
 {
     duel_game g;
     int err;
     if (res == NULL)
         return DUEL_E_ARG;
-    err = duel_game_begin(&g, west, east, food_config);
+    err = duel_game_begin(&g, rules, west, east, food_config);
     if (err)
         return err;
     while (g.w.outcome == DUEL_RUNNING) {
@@ -208,16 +211,16 @@ static int duel_games_apart(const duel_game g[2])
     return 1;
 }
 
-int duel_play2(duel_controller *const west[2], duel_controller *const east[2], const int food_config[2],
-               duel_result res[2])
+static int duel_play2_in(const duel_rules *rules, duel_controller *const west[2], duel_controller *const east[2],
+                         const int food_config[2], duel_result res[2])
 {
     duel_game g[2];
     int err, k;
     if (west == NULL || east == NULL || food_config == NULL || res == NULL)
         return DUEL_E_ARG;
-    err = duel_game_begin(&g[0], west[0], east[0], food_config[0]);
+    err = duel_game_begin(&g[0], rules, west[0], east[0], food_config[0]);
     if (err == DUEL_OK)
-        err = duel_game_begin(&g[1], west[1], east[1], food_config[1]);
+        err = duel_game_begin(&g[1], rules, west[1], east[1], food_config[1]);
     if (err)
         return err;
     if (!duel_games_apart(g)) {
@@ -225,7 +228,7 @@ int duel_play2(duel_controller *const west[2], duel_controller *const east[2], c
          * again from the networks as game 0 leaves them */
         duel_game_run(&g[0]);
         duel_game_end(&g[0], &res[0]);
-        err = duel_game_begin(&g[1], west[1], east[1], food_config[1]);
+        err = duel_game_begin(&g[1], rules, west[1], east[1], food_config[1]);
         if (err)
             return err;
         duel_game_run(&g[1]);
@@ -253,15 +256,16 @@ int duel_play2(duel_controller *const west[2], duel_controller *const east[2], c
     return DUEL_OK;
 }
 
-#else /* no dense forms (the firmware, any host but x86-64): the loop as it was, unchanged */
+#else /* no dense forms (the firmware, any host but x86-64): the loop as it was */
 
-int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
-              void *ud)
+static int duel_play_in(const duel_rules *rules, duel_controller *west, duel_controller *east, int food_config,
+                        duel_result *res, duel_trace_fn trace, void *ud)
 {
     duel_world w;
     nrt_q15 in_buf[2][DUEL_N_INPUTS], out_buf[2][DUEL_N_OUTPUTS], *in[2];
     const nrt_q15 *out[2];
     int food_near;
+    nrt_q15 near_limit = duel_food_near_limit(rules);
     int err, side;
 
     if (res == NULL || west == NULL || east == NULL)
@@ -271,7 +275,7 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         return DUEL_E_ARG;
     if (!duel_controller_ok(west) || !duel_controller_ok(east))
         return DUEL_E_NET;
-    err = duel_world_init(&w, food_config);
+    err = duel_world_start(&w, rules, food_config);
     if (err)
         return err;
     if (west->net != NULL)
@@ -287,7 +291,7 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
         duel_sense(&w, DUEL_EAST, in[DUEL_EAST]);
         out[DUEL_WEST] = duel_act(west, in[DUEL_WEST], out_buf[DUEL_WEST]);
         out[DUEL_EAST] = duel_act(east, in[DUEL_EAST], out_buf[DUEL_EAST]);
-        food_near = duel_food_near(in[DUEL_WEST]) || duel_food_near(in[DUEL_EAST]);
+        food_near = duel_food_near(in[DUEL_WEST], near_limit) || duel_food_near(in[DUEL_EAST], near_limit);
         if (trace != NULL)
             duel_traced_step(&w, in, out, food_near, trace, ud);
         else
@@ -303,14 +307,14 @@ int duel_play(duel_controller *west, duel_controller *east, int food_config, due
 }
 
 /* the networks the two games share have one state: one game after the other */
-int duel_play2(duel_controller *const west[2], duel_controller *const east[2], const int food_config[2],
-               duel_result res[2])
+static int duel_play2_in(const duel_rules *rules, duel_controller *const west[2], duel_controller *const east[2],
+                         const int food_config[2], duel_result res[2])
 {
     int err, k;
     if (west == NULL || east == NULL || food_config == NULL || res == NULL)
         return DUEL_E_ARG;
     for (k = 0; k < 2; k++) {
-        err = duel_play(west[k], east[k], food_config[k], &res[k], NULL, NULL);
+        err = duel_play_in(rules, west[k], east[k], food_config[k], &res[k], NULL, NULL);
         if (err)
             return err;
     }
@@ -318,6 +322,40 @@ int duel_play2(duel_controller *const west[2], duel_controller *const east[2], c
 }
 
 #endif
+
+/* The public games: v1 as it always was (no check: its rules are known
+ * good), other rules checked once per call */
+int duel_play(duel_controller *west, duel_controller *east, int food_config, duel_result *res, duel_trace_fn trace,
+              void *ud)
+{
+    return duel_play_in(&duel_v1_rules, west, east, food_config, res, trace, ud);
+}
+
+int duel_play_rules(const duel_rules *rules, duel_controller *west, duel_controller *east, int food_config,
+                    duel_result *res, duel_trace_fn trace, void *ud)
+{
+    if (rules == NULL)
+        rules = &duel_v1_rules;
+    else if (duel_rules_check(rules, NULL, NULL) != DUEL_OK)
+        return DUEL_E_RULES;
+    return duel_play_in(rules, west, east, food_config, res, trace, ud);
+}
+
+int duel_play2(duel_controller *const west[2], duel_controller *const east[2], const int food_config[2],
+               duel_result res[2])
+{
+    return duel_play2_in(&duel_v1_rules, west, east, food_config, res);
+}
+
+int duel_play2_rules(const duel_rules *rules, duel_controller *const west[2], duel_controller *const east[2],
+                     const int food_config[2], duel_result res[2])
+{
+    if (rules == NULL)
+        rules = &duel_v1_rules;
+    else if (duel_rules_check(rules, NULL, NULL) != DUEL_OK)
+        return DUEL_E_RULES;
+    return duel_play2_in(rules, west, east, food_config, res);
+}
 
 /* A game of the comparison in the tally: side 0, a started west */
 static void duel_tally_add(duel_tally *tally, int outcome, int side)
@@ -332,7 +370,7 @@ static void duel_tally_add(duel_tally *tally, int outcome, int side)
         tally->wins_b++;
 }
 
-int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
+static int duel_compare_in(const duel_rules *rules, duel_controller *a, duel_controller *b, duel_tally *tally)
 {
     int k, side, err;
 #if DUEL_HAVE_AVX2
@@ -354,7 +392,7 @@ int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
     for (k = 0; k < DUEL_CONFIGS; k++) {
 #if DUEL_HAVE_AVX2
         config[0] = config[1] = k;
-        err = duel_play2(west, east, config, r);
+        err = duel_play2_in(rules, west, east, config, r);
         if (err)
             return err;
         for (side = 0; side < 2; side++)
@@ -362,7 +400,7 @@ int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
 #else
         for (side = 0; side < 2; side++) {
             /* side 0: a starts west; side 1: b starts west */
-            err = side == 0 ? duel_play(a, b, k, &r, NULL, NULL) : duel_play(b, a, k, &r, NULL, NULL);
+            err = side == 0 ? duel_play_in(rules, a, b, k, &r, NULL, NULL) : duel_play_in(rules, b, a, k, &r, NULL, NULL);
             if (err)
                 return err;
             duel_tally_add(tally, r.outcome, side);
@@ -370,6 +408,20 @@ int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
 #endif
     }
     return DUEL_OK;
+}
+
+int duel_compare(duel_controller *a, duel_controller *b, duel_tally *tally)
+{
+    return duel_compare_in(&duel_v1_rules, a, b, tally);
+}
+
+int duel_compare_rules(const duel_rules *rules, duel_controller *a, duel_controller *b, duel_tally *tally)
+{
+    if (rules == NULL)
+        rules = &duel_v1_rules;
+    else if (duel_rules_check(rules, NULL, NULL) != DUEL_OK)
+        return DUEL_E_RULES;
+    return duel_compare_in(rules, a, b, tally);
 }
 
 const char *duel_outcome_text(int outcome)

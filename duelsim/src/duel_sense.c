@@ -1,4 +1,4 @@
-/* duel_sense.c - the 13 sensors of spec v1: rangefinders by cross products (no trigonometry per object), energy, wall. */
+/* duel_sense.c - the 13 sensors: rangefinders by cross products (no trigonometry per object), energy, wall. */
 #include "duel_sensors.h"
 
 /* Nearest squared distance per sector, minus one, into near[5] (UINT64_MAX:

@@ -46,6 +46,37 @@ int duel_simd_active(void)
     return DUEL_SIMD_AVX2;
 }
 
+/* floor(r / range) = r * mul >> shift for every r below 2^26 (a distance
+ * on the board in Q16.16): shift = 26 + ceil(log2 range), mul =
+ * ceil(2^shift / range) = (2^shift + e) / range with 0 <= e < range, so
+ * r * mul / 2^shift = r / range + r e / (range 2^shift), and r e < 2^26
+ * 2^ceil(log2 range) = 2^shift keeps the excess below 1 / range: it never
+ * reaches the next multiple. mul <= 2^27 + 1: a 32 x 32-bit product. */
+static void duel_divisor(uint32_t range, int64_t *mul, int64_t *shift)
+{
+    int s = 26;
+    while ((1u << (s - 26)) < range)
+        s++;
+    *shift = s;
+    *mul = (int64_t)((((uint64_t)1 << s) + range - 1u) / range);
+}
+
+void duel_lanes_init(duel_lanes *lanes, const duel_rules *r)
+{
+    int64_t fm, fs, rm, rs;
+    int k;
+    lanes->mask = ~0u;
+    lanes->level = duel_simd_active();
+    duel_divisor(r->food_range, &fm, &fs);
+    duel_divisor(r->robot_range, &rm, &rs);
+    for (k = 0; k < 4; k++) {
+        lanes->mul[0][k] = fm;
+        lanes->shift[0][k] = fs;
+        lanes->mul[1][k] = k < 2 ? fm : rm;
+        lanes->shift[1][k] = k < 2 ? fs : rs;
+    }
+}
+
 #define DUEL_AVX2 __attribute__((target("avx2")))
 /* Every helper below is inlined into the two sensing functions at the end
  * (the AVX2 one and the AVX-512VL one, whose target includes AVX2's): so
@@ -143,28 +174,33 @@ static void duel_lanes_make(duel_lanes *l, const duel_world *w)
 }
 
 /* duel_range_reading of four squared distances given as keys (d2 - 1 with
- * the top bit flipped; INT64_MAX: none, reading 0). r = floor(sqrt(d2)) is
- * the truncated double-precision square root of d2, exactly: d2 < 2^52 on
- * the board (offsets below 2^26 / sqrt 2) is exact in a double, and for
- * an integer k <= 2^26 every d2 < k^2 has sqrt(d2) <= sqrt(k^2 - 1) <
- * k - 1/(2k), more than half a unit in the last place (at most 2^-28
- * there) below k, so the correctly rounded root stays below k; every d2 >=
- * k^2 has a root, and so a rounded root, of at least k. Then n = r / 850
- * by a multiply (2^40 / 850 rounded up, exact below 2^26), the reading
- * 32768 - (n + 1) / 2 at most 32767: duel_range_reading's value
- * (floor(sqrt(floor(d2 / 722500))) = floor(floor(sqrt(d2)) / 850), 722500 =
- * 850^2). tests/duelsim/test_golden.c compares it with duel_sense at every
+ * the top bit flipped; INT64_MAX: none, reading 0), with the lanes'
+ * divisors (duel_lanes: which = 0 four food lanes, 1 two food, two robot).
+ * r = floor(sqrt(d2)) is the truncated double-precision square root of d2,
+ * exactly: d2 < 2^52 on the board (offsets below 2^26 / sqrt 2) is exact in
+ * a double, and for an integer k <= 2^26 every d2 < k^2 has sqrt(d2) <=
+ * sqrt(k^2 - 1) < k - 1/(2k), more than half a unit in the last place (at
+ * most 2^-28 there) below k, so the correctly rounded root stays below k;
+ * every d2 >= k^2 has a root, and so a rounded root, of at least k. Then n
+ * = floor(r / range) by a multiply (duel_divisor), the reading 32768 -
+ * (n + 1) / 2 at most 32767 and at least 0 (beyond the range n >= 65536
+ * makes it negative: a signed 32-bit maximum with 0 clears the whole lane,
+ * its high half being -1 or 0): duel_range_reading's value
+ * (floor(sqrt(floor(d2 / range^2))) = floor(floor(sqrt(d2)) / range)).
+ * tests/duelsim/test_golden.c compares it with duel_sense at every
  * distance where a reading steps. */
-DUEL_AVX2 DUEL_INLINE __m256i duel_readings4(__m256i key)
+DUEL_AVX2 DUEL_INLINE __m256i duel_readings4(__m256i key, const duel_lanes *l, int which)
 {
     const __m256i none = _mm256_cmpeq_epi64(key, _mm256_set1_epi64x(INT64_MAX));
     const __m256i two52 = _mm256_set1_epi64x(0x4330000000000000LL), one = _mm256_set1_epi64x(1);
     __m256i d2 = _mm256_sub_epi64(key, _mm256_set1_epi64x(INT64_MAX));
     __m256d x = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(d2, two52)), _mm256_castsi256_pd(two52));
     __m256i r = _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(_mm256_sqrt_pd(x)));
-    __m256i n = _mm256_srli_epi64(_mm256_mul_epu32(r, _mm256_set1_epi64x(1293543092)), 40);
+    __m256i n = _mm256_srlv_epi64(_mm256_mul_epu32(r, _mm256_loadu_si256((const __m256i *)(const void *)l->mul[which])),
+                                  _mm256_loadu_si256((const __m256i *)(const void *)l->shift[which]));
     __m256i v = _mm256_sub_epi64(_mm256_set1_epi64x(32768), _mm256_srli_epi64(_mm256_add_epi64(n, one), 1));
     v = _mm256_add_epi64(v, _mm256_cmpgt_epi64(v, _mm256_set1_epi64x(32767)));
+    v = _mm256_max_epi32(v, _mm256_setzero_si256());
     return _mm256_andnot_si256(none, v);
 }
 
@@ -211,10 +247,11 @@ DUEL_AVX2 DUEL_INLINE void duel_scan_pair(const duel_world *w, const duel_lanes 
     }
     /* (west k, east k, west k+1, east k+1): sectors 0-1, 2-3, then 4 and
      * the robot rangefinder's distance */
-    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4(_mm256_blend_epi32(best[0], best[1], 0xF0)));
-    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4(_mm256_blend_epi32(best[2], best[3], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4(_mm256_blend_epi32(best[0], best[1], 0xF0), l, 0));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4(_mm256_blend_epi32(best[2], best[3], 0xF0), l, 0));
     _mm256_storeu_si256((__m256i *)(void *)(rd + 8),
-                        duel_readings4(_mm256_blend_epi32(best[4], _mm256_add_epi64(_mm256_set1_epi64x(robot_d2), flip), 0xF0)));
+                        duel_readings4(_mm256_blend_epi32(best[4], _mm256_add_epi64(_mm256_set1_epi64x(robot_d2), flip), 0xF0),
+                                       l, 1));
 }
 
 #define DUEL_AVX512 __attribute__((target("avx2,avx512f,avx512vl,avx512dq")))
@@ -222,15 +259,16 @@ DUEL_AVX2 DUEL_INLINE void duel_scan_pair(const duel_world *w, const duel_lanes 
 /* duel_readings4 of four squared distances less one (unsigned; all ones:
  * none, reading 0) with AVX-512DQ's conversions between 64-bit integers and
  * doubles; the same values by the same argument */
-DUEL_AVX512 DUEL_INLINE __m256i duel_readings4_vl(__m256i d2m1)
+DUEL_AVX512 DUEL_INLINE __m256i duel_readings4_vl(__m256i d2m1, const duel_lanes *l, int which)
 {
     const __m256i minus1 = _mm256_set1_epi64x(-1);
     __mmask8 some = _mm256_cmpneq_epu64_mask(d2m1, minus1);
     __m256d x = _mm256_cvtepi64_pd(_mm256_sub_epi64(d2m1, minus1));
     __m256i r = _mm256_cvttpd_epi64(_mm256_sqrt_pd(x));
-    __m256i n = _mm256_srli_epi64(_mm256_mul_epu32(r, _mm256_set1_epi64x(1293543092)), 40);
+    __m256i n = _mm256_srlv_epi64(_mm256_mul_epu32(r, _mm256_loadu_si256((const __m256i *)(const void *)l->mul[which])),
+                                  _mm256_loadu_si256((const __m256i *)(const void *)l->shift[which]));
     __m256i v = _mm256_sub_epi64(_mm256_set1_epi64x(32768), _mm256_srli_epi64(_mm256_sub_epi64(n, minus1), 1));
-    return _mm256_maskz_min_epi64(some, v, _mm256_set1_epi64x(32767));
+    return _mm256_maskz_max_epi64(some, _mm256_min_epi64(v, _mm256_set1_epi64x(32767)), _mm256_setzero_si256());
 }
 
 /* duel_scan_pair with AVX-512VL: the keys are d2 - 1 as unsigned (an item
@@ -261,10 +299,10 @@ DUEL_AVX512 DUEL_INLINE void duel_scan_pair_vl(const duel_world *w, const duel_l
         /* the nearer of the two halves */
         best[k] = _mm256_min_epu64(best[k], _mm256_permute4x64_epi64(best[k], 0x4E));
     /* the lanes of duel_scan_pair's readings */
-    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4_vl(_mm256_blend_epi32(best[0], best[1], 0xF0)));
-    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4_vl(_mm256_blend_epi32(best[2], best[3], 0xF0)));
+    _mm256_storeu_si256((__m256i *)(void *)rd, duel_readings4_vl(_mm256_blend_epi32(best[0], best[1], 0xF0), l, 0));
+    _mm256_storeu_si256((__m256i *)(void *)(rd + 4), duel_readings4_vl(_mm256_blend_epi32(best[2], best[3], 0xF0), l, 0));
     _mm256_storeu_si256((__m256i *)(void *)(rd + 8),
-                        duel_readings4_vl(_mm256_blend_epi32(best[4], _mm256_set1_epi64x(robot_d2 - 1), 0xF0)));
+                        duel_readings4_vl(_mm256_blend_epi32(best[4], _mm256_set1_epi64x(robot_d2 - 1), 0xF0), l, 1));
 }
 
 /* The inputs of both robots from the food readings rd (duel_scan_pair's)
@@ -274,6 +312,7 @@ DUEL_AVX2 DUEL_INLINE void duel_sense_end(const duel_world *w, const int32_t c[2
                                           const __m256i bx[5], const __m256i by[5], const int64_t rd[12],
                                           nrt_q15 west[DUEL_N_INPUTS], nrt_q15 east[DUEL_N_INPUTS])
 {
+    const duel_rules *R = w->rules; /* set: duel_play made the world */
     const duel_robot *a = &w->robot[DUEL_WEST], *b = &w->robot[DUEL_EAST];
     int64_t vx = (int64_t)b->x - a->x, vy = (int64_t)b->y - a->y, d2 = vx * vx + vy * vy, sec[4];
     nrt_q15 *in[2], energy;
@@ -294,7 +333,7 @@ DUEL_AVX2 DUEL_INLINE void duel_sense_end(const duel_world *w, const int32_t c[2
     in[0] = west;
     in[1] = east;
     /* the two robots read exact opposites (duel_energy_reading) */
-    energy = duel_energy_reading(a->energy, b->energy);
+    energy = duel_energy_reading(a->energy, b->energy, R->energy_scale);
     for (side = 0; side < 2; side++) {
         /* duel_sense_finish with the readings taken above */
         nrt_q15 *v = in[side];
@@ -305,7 +344,7 @@ DUEL_AVX2 DUEL_INLINE void duel_sense_end(const duel_world *w, const int32_t c[2
         if (d2 != 0)
             v[6 + sec[side]] = (nrt_q15)rd[10];
         v[11] = side == 0 ? energy : (nrt_q15)-energy;
-        v[12] = duel_wall_reading(&w->robot[side], c[side], s[side]);
+        v[12] = duel_wall_reading(&w->robot[side], c[side], s[side], R->wall_range);
     }
 }
 
@@ -359,6 +398,13 @@ int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_
 int duel_simd_active(void)
 {
     return DUEL_SIMD_NONE;
+}
+
+void duel_lanes_init(duel_lanes *lanes, const duel_rules *r)
+{
+    (void)r;
+    lanes->mask = ~0u;
+    lanes->level = DUEL_SIMD_NONE;
 }
 
 int duel_sense_both(const duel_world *w, duel_lanes *lanes, nrt_q15 west[DUEL_N_INPUTS],

@@ -212,7 +212,7 @@ static int tg_paths_differ(const duel_world *w)
     for (level = DUEL_SIMD_AVX2; level <= tg_simd_best() && !differ; level++) {
         duel_simd_allow(level);
         assert_int_equal(duel_simd_active(), level);
-        duel_lanes_init(&lanes);
+        duel_lanes_init(&lanes, duel_rules_of(w));
         assert_int_equal(duel_sense_both(w, &lanes, both[0], both[1]), 0);
         if (memcmp(both, scalar, sizeof both) != 0)
             differ = level;
