@@ -18,6 +18,8 @@ if(NEAT_FUZZ)
   target_link_libraries(fuzz_genome PRIVATE neat nrt)
   neat_add_fuzz(fuzz_coev)
   target_link_libraries(fuzz_coev PRIVATE neat)
+  neat_add_fuzz(fuzz_rules)
+  target_link_libraries(fuzz_rules PRIVATE duelsim)
   neat_add_fuzz(fuzz_ini ${PROJECT_SOURCE_DIR}/tools/common/duel_config.c ${PROJECT_SOURCE_DIR}/bench/bench_config.c
                 ${PROJECT_SOURCE_DIR}/tools/experiment/duel_plan.c)
   target_include_directories(fuzz_ini PRIVATE ${PROJECT_SOURCE_DIR}/bench ${PROJECT_SOURCE_DIR}/tools/experiment)
@@ -31,9 +33,9 @@ if(NEAT_FUZZ)
   target_link_libraries(fuzz_rundir PRIVATE duelfiles)
   neat_add_fuzz(fuzz_mpi_wire ${PROJECT_SOURCE_DIR}/tools/mpi/duel_mpi_wire.c)
   target_include_directories(fuzz_mpi_wire PRIVATE ${PROJECT_SOURCE_DIR}/tools/mpi)
-  target_link_libraries(fuzz_mpi_wire PRIVATE neattools nrt)
+  target_link_libraries(fuzz_mpi_wire PRIVATE neattools duelsim nrt)
 
-  add_custom_target(fuzzers DEPENDS fuzz_blob fuzz_pop fuzz_genome fuzz_coev fuzz_ini fuzz_lcm_log fuzz_lcm_msg fuzz_rundir
+  add_custom_target(fuzzers DEPENDS fuzz_blob fuzz_pop fuzz_genome fuzz_coev fuzz_rules fuzz_ini fuzz_lcm_log fuzz_lcm_msg fuzz_rundir
                   fuzz_mpi_wire)
 
   add_executable(make_corpus fuzz/make_corpus.c)

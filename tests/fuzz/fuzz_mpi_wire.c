@@ -14,6 +14,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     duel_wire_store s;
+    duel_rules rules;
     duel_match *m = NULL;
     size_t m_cap = 0, body = size > 2 ? size - 2 : 0, cut = size > 2 ? (size_t)data[0] | (size_t)data[1] << 8 : 0;
     size_t part;
@@ -32,7 +33,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (buf == NULL)
             break;
         memcpy(buf, p, len);
-        if (duel_wire_work_take(&s, buf, len, &h, &m, &m_cap) != 0) {
+        if (duel_wire_work_take(&s, buf, len, &h, &rules, &m, &m_cap) != 0) {
             free(buf); /* refused: still the caller's */
             continue;
         }

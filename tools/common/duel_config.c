@@ -9,13 +9,16 @@
 #include "neat_ini.h"
 #include "duel_files.h"
 #include "duel_genome_file.h"
+#include "duel_world_cfg.h"
 
 #define RUN_KEY(name, type, lo, hi) {#name, type, offsetof(duel_config, name), lo, hi, NULL}
 #define COEV_KEY(name, lo, hi) {#name, NEAT_CFG_U32, offsetof(neat_coev_params, name), lo, hi, NULL}
 
+static const char *const duel_train_names[] = {"training", "comparison", NULL};
 static const neat_cfg_key duel_run_keys[] = {
     RUN_KEY(generations, NEAT_CFG_U32, 1, 1000000),
     RUN_KEY(seed, NEAT_CFG_U32, 0, 4294967295.0),
+    {"train_layouts", NEAT_CFG_ENUM, offsetof(duel_config, train_layouts), 0, 1, duel_train_names},
 };
 static const neat_cfg_key duel_coev_keys[] = {
     COEV_KEY(species_opponents, 0, 64),
@@ -42,6 +45,8 @@ void duel_config_default(duel_config *cfg)
     cfg->neat.weight_perturb_power = 1.0;
     cfg->neat.weight_replace_range = 1.0;
     cfg->start.kind = DUEL_START_MINIMAL;
+    cfg->train_layouts = DUEL_TRAIN_FIXED;
+    cfg->world = *duel_rules_v1();
 }
 
 /* "minimal", "hidden:H:inputs", "hidden:H:bias", "blob:PATH" or "genome:PATH". */
@@ -206,6 +211,12 @@ static const char *duel_key_home(const char *name)
         return "coevolution";
     if (neat_config_has_key(name) || strcmp(name, "start") == 0)
         return "neat";
+    {
+        size_t i;
+        for (i = 0; i < duel_world_n_keys; i++)
+            if (strcmp(duel_world_keys[i], name) == 0)
+                return "world";
+    }
     return NULL;
 }
 
@@ -221,8 +232,10 @@ static int duel_set_in(duel_config *cfg, const char *section, const char *name, 
         return duel_start_parse(&cfg->start, value, err, err_len);
     else if (strcmp(section, "neat") == 0)
         r = neat_config_set(&cfg->neat, name, value, err, err_len);
+    else if (strcmp(section, "world") == 0)
+        r = duel_world_set(&cfg->world, name, value, err, err_len);
     else {
-        snprintf(err, err_len, "unknown section [%s] (expected [run], [coevolution] or [neat])", section);
+        snprintf(err, err_len, "unknown section [%s] (expected [run], [coevolution], [neat] or [world])", section);
         return -1;
     }
     if (r != 0 && strncmp(err, "unknown key", 11) == 0) {
@@ -271,7 +284,7 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
         snprintf(err, err_len, "[coevolution] %s out of range", field);
         return -1;
     }
-    return 0;
+    return duel_world_check(&cfg->world, err, err_len);
 }
 
 int duel_config_read(duel_config *cfg, const char *path, char *err, size_t err_len)
@@ -345,4 +358,6 @@ void duel_config_dump(FILE *out, const duel_config *cfg)
         fprintf(out, "start = %s\n", st);
     }
     neat_config_dump(out, &cfg->neat);
+    fprintf(out, "\n[world]\n");
+    duel_world_dump(out, &cfg->world);
 }

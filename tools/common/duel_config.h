@@ -1,4 +1,4 @@
-/* duel_config.h - a coevolution run's configuration: the [run], [coevolution] and [neat] sections of an INI file. */
+/* duel_config.h - a run's configuration: the [run], [coevolution], [neat] and [world] sections of an INI file. */
 /* tools/common/: what the commands share: the run configuration and every libneat parameter in INI, run-directory files, controllers named on the command line, traces, genome -> blob -> runtime, the threaded game batches of coevolution. */
 #ifndef DUEL_CONFIG_H
 #define DUEL_CONFIG_H
@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "duel.h"
 #include "neat.h"
 #include "neat_coev.h"
 
@@ -26,12 +27,20 @@ typedef struct duel_start {
     char path[DUEL_START_MAX_PATH]; /* DUEL_START_BLOB, DUEL_START_GENOME: as given */
 } duel_start;
 
+/* [run] train_layouts: the food of the training games */
+enum duel_train_layouts {
+    DUEL_TRAIN_FIXED = 0,     /* "training": the rules' training items, every generation (the paper) */
+    DUEL_TRAIN_COMPARISON = 1 /* "comparison": one of the 144 comparison layouts, drawn per generation */
+};
+
 typedef struct duel_config {
     uint32_t generations; /* [run] generations to play in all */
     uint32_t seed;        /* [run] */
+    int train_layouts;    /* [run] enum duel_train_layouts */
     neat_coev_params coev;
     neat_params neat;
     duel_start start;     /* [neat] start */
+    duel_rules world;     /* [world]: the duel's chosen rules (v1 by default) */
 } duel_config;
 
 /* The paper's values (Appendix A, section 5): 500 generations, seed 1. */

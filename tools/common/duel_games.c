@@ -17,6 +17,8 @@
 struct duel_games {
     uint32_t threads;
     neat_params p;
+    duel_rules rules;       /* the world the games are played in */
+    int32_t train_config;   /* the training games' food: DUEL_TRAINING or a comparison layout */
     duel_progress_fn progress;
     void *progress_ud;
     duel_remote_fn remote;
@@ -39,6 +41,7 @@ struct duel_games {
 typedef struct duel_seat {
     neat_phenotype ph;
     const void *key; /* the genome, or the duel_net */
+    int builtin;     /* a duel_net without a blob: that builtin strategy (enum duel_builtin), else -1 */
 } duel_seat;
 
 /* Opponents a worker keeps loaded: a generation's hosts all meet the same
@@ -62,11 +65,19 @@ static int duel_seat_load(duel_seat *s, const duel_games *dg, const void *key)
     if (s->key == key)
         return 0; /* duel_play resets the network at the start of a game */
     s->key = NULL;
+    s->builtin = -1;
     if (dg->games != NULL) {
         err = neat_phenotype_load(&s->ph, (const neat_genome *)key, &dg->p);
     } else {
         const duel_net *net = (const duel_net *)key;
-        err = neat_phenotype_load_blob(&s->ph, net->blob, net->len);
+        if (net->blob == NULL) {
+            if (net->len >= DUEL_N_BUILTINS)
+                return DUEL_E_ARG - 200;
+            s->builtin = (int)net->len;
+            err = 0;
+        } else {
+            err = neat_phenotype_load_blob(&s->ph, net->blob, net->len);
+        }
     }
     if (err == 0)
         s->key = key;
@@ -114,6 +125,16 @@ typedef struct duel_setup {
     int config, a_first;
 } duel_setup;
 
+/* the controller of what a seat holds: its network, or its builtin */
+static void duel_seat_controller(duel_seat *s, duel_controller *c)
+{
+    memset(c, 0, sizeof *c);
+    if (s->builtin >= 0)
+        c->builtin = s->builtin;
+    else
+        c->net = &s->ph.net;
+}
+
 static int duel_setup_game(duel_games *dg, duel_seats *ss, size_t i, const duel_setup *busy, duel_setup *g)
 {
     const void *a, *b;
@@ -137,10 +158,8 @@ static int duel_setup_game(duel_games *dg, duel_seats *ss, size_t i, const duel_
     g->opp = duel_seat_kept(ss, dg, b, busy != NULL ? busy->opp : NULL, &err);
     if (err)
         return err;
-    memset(&g->west, 0, sizeof g->west);
-    memset(&g->east, 0, sizeof g->east);
-    g->west.net = g->a_first ? &g->host->ph.net : &g->opp->ph.net;
-    g->east.net = g->a_first ? &g->opp->ph.net : &g->host->ph.net;
+    duel_seat_controller(g->a_first ? g->host : g->opp, &g->west);
+    duel_seat_controller(g->a_first ? g->opp : g->host, &g->east);
     return 0;
 }
 
@@ -168,7 +187,7 @@ static int duel_play_one(duel_games *dg, duel_seats *ss, size_t i, uint32_t *ste
     int err = duel_setup_game(dg, ss, i, NULL, &g);
     if (err)
         return err;
-    err = duel_play(&g.west, &g.east, g.config, &res, NULL, NULL);
+    err = duel_play_rules(&dg->rules, &g.west, &g.east, g.config, &res, NULL, NULL);
     if (err)
         return err - 200;
     *steps = res.steps;
@@ -194,7 +213,7 @@ static int duel_play_two(duel_games *dg, duel_seats *ss, size_t i, uint32_t *ste
             east[k] = &g[k].east;
             config[k] = g[k].config;
         }
-        err = duel_play2(west, east, config, res);
+        err = duel_play2_rules(&dg->rules, west, east, config, res);
     }
     if (err == 0) {
         for (k = 0; k < 2; k++)
@@ -239,10 +258,12 @@ static void *duel_worker(void *arg)
     for (k = 0; k < 2; k++) {
         neat_phenotype_init(&ss->host[k].ph, NULL);
         ss->host[k].key = NULL;
+        ss->host[k].builtin = -1;
     }
     for (k = 0; k < DUEL_KEPT; k++) {
         neat_phenotype_init(&ss->kept[k].ph, NULL);
         ss->kept[k].key = NULL;
+        ss->kept[k].builtin = -1;
     }
     ss->next = 0;
     for (;;) {
@@ -293,6 +314,8 @@ int duel_games_create(duel_games **out, uint32_t threads, const neat_params *p)
         threads = duel_cores();
     dg->threads = threads;
     dg->p = *p;
+    dg->rules = *duel_rules_v1();
+    dg->train_config = DUEL_TRAINING;
     pthread_mutex_init(&dg->lock, NULL);
     pthread_cond_init(&dg->moved, NULL);
     *out = dg;
@@ -316,6 +339,24 @@ uint32_t duel_games_threads(const duel_games *dg)
 const neat_params *duel_games_params(const duel_games *dg)
 {
     return &dg->p;
+}
+
+int duel_games_set_rules(duel_games *dg, const duel_rules *r)
+{
+    if (duel_rules_check(r, NULL, NULL) != DUEL_OK)
+        return DUEL_E_RULES;
+    dg->rules = *r;
+    return 0;
+}
+
+const duel_rules *duel_games_rules(const duel_games *dg)
+{
+    return &dg->rules;
+}
+
+void duel_games_set_training(duel_games *dg, int32_t config)
+{
+    dg->train_config = config;
 }
 
 void duel_games_on_progress(duel_games *dg, duel_progress_fn fn, void *ud)
@@ -460,8 +501,16 @@ static int duel_games_run(duel_games *dg, size_t n)
 int duel_games_play(void *ud, neat_game *games, size_t n)
 {
     duel_games *dg = (duel_games *)ud;
+    size_t i;
     if (n == 0)
         return 0;
+    /* the generation's training food, written into the games before any is
+     * handed out (to this process's workers or to other ranks): libneat
+     * only writes a game's configuration */
+    if (dg->train_config != DUEL_TRAINING)
+        for (i = 0; i < n; i++)
+            if (games[i].config < 0)
+                games[i].config = dg->train_config;
     dg->games = games;
     dg->matches = NULL;
     dg->nets = NULL;

@@ -2,6 +2,7 @@
 #ifndef DUEL_GAMES_H
 #define DUEL_GAMES_H
 
+#include "duel.h"
 #include "neat_coev.h"
 
 typedef struct duel_games duel_games;
@@ -10,8 +11,15 @@ typedef struct duel_games duel_games;
  * five times a second and once at the end (done == total). */
 typedef void (*duel_progress_fn)(void *ud, uint64_t done, uint64_t total);
 
-/* threads 0: every core. */
+/* threads 0: every core. The games are world v1's until duel_games_set_rules. */
 int duel_games_create(duel_games **out, uint32_t threads, const neat_params *p);
+/* The world of every later game (copied; checked: DUEL_E_RULES). */
+int duel_games_set_rules(duel_games *dg, const duel_rules *r);
+const duel_rules *duel_games_rules(const duel_games *dg);
+/* The food of the training games (config -1) from now on: DUEL_TRAINING
+ * (the rules' training items, the default) or a comparison layout 0..143
+ * ([run] train_layouts = comparison draws one per generation). */
+void duel_games_set_training(duel_games *dg, int32_t config);
 void duel_games_free(duel_games *dg);
 uint32_t duel_games_threads(const duel_games *dg);
 void duel_games_on_progress(duel_games *dg, duel_progress_fn fn, void *ud);
@@ -25,7 +33,8 @@ int duel_games_play(void *ud, neat_game *games, size_t n);
 /* Games between networks given as blobs (another process's share of a
  * batch, tools/mpi): match i plays nets[a] against nets[b], a on the west
  * side when a_first, config as in neat_game; result as in neat_game. The
- * same results as the genomes the blobs were written from. */
+ * same results as the genomes the blobs were written from. A duel_net
+ * without a blob (NULL) is the builtin strategy number len. */
 typedef struct duel_net {
     const uint8_t *blob;
     size_t len;

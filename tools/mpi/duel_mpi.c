@@ -18,7 +18,7 @@
 #define DUEL_VERSION "0"
 #endif
 /* The protocol of this directory's messages; a test build sets another salt to play a mismatched rank. */
-#define DUEL_MPI_PROTOCOL 1
+#define DUEL_MPI_PROTOCOL 2 /* 2: the work header carries the rules of the world */
 #ifndef DUEL_MPI_SALT
 #define DUEL_MPI_SALT 0
 #endif
@@ -61,9 +61,10 @@ static uint64_t duel_mpi_version_word(void)
     uint32_t one = 1;
     duel_controller w, e;
     duel_result res;
-    snprintf(text, sizeof text, "neat-duel %s; mpi protocol %d salt %d; spec %d; checkpoint %d/%d; blob %d; "
+    snprintf(text, sizeof text, "neat-duel %s; mpi protocol %d salt %d; world v1 %016llx; checkpoint %d/%d; blob %d; "
                                 "runtime %d.%d; pointer %u; int %u",
-             DUEL_VERSION, DUEL_MPI_PROTOCOL, DUEL_MPI_SALT, DUEL_SPEC_VERSION, NEAT_CHECKPOINT_VERSION,
+             DUEL_VERSION, DUEL_MPI_PROTOCOL, DUEL_MPI_SALT, (unsigned long long)duel_rules_id(duel_rules_v1()),
+             NEAT_CHECKPOINT_VERSION,
              NEAT_COEV_CHECKPOINT_VERSION, NRT_FORMAT_VERSION, NRT_VERSION_MAJOR, NRT_VERSION_MINOR,
              (unsigned)sizeof(void *), (unsigned)sizeof(int));
     h = duel_fnv(h, text, strlen(text));

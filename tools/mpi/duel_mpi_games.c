@@ -176,6 +176,11 @@ static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot
     h.batch = d->seq;
     h.from = from;
     h.n_new = (uint32_t)n_new;
+    if (duel_rules_encode(duel_games_rules(dg), h.rules) != DUEL_OK) {
+        free(ids);
+        duel_games_remote_done(dg, 0, 0, DUEL_E_RULES - 200, from);
+        return 1;
+    }
     memcpy(s->buf, &h, sizeof h);
     pos = sizeof h;
     for (i = 0; i < 2 * count; i++)
@@ -378,6 +383,7 @@ int duel_mpi_games_serve(MPI_Comm comm, int leader, uint32_t threads, int *end_s
 {
     duel_games *dg = NULL;
     duel_wire_store store;
+    duel_rules rules;
     duel_match *m = NULL;
     size_t m_cap = 0;
     uint8_t *out = NULL;
@@ -406,14 +412,16 @@ int duel_mpi_games_serve(MPI_Comm comm, int leader, uint32_t threads, int *end_s
             rc = 0;
             break;
         }
-        if (st.MPI_TAG != DUEL_TAG_WORK || duel_wire_work_take(&store, buf, len, &h, &m, &m_cap) != 0) {
+        if (st.MPI_TAG != DUEL_TAG_WORK || duel_wire_work_take(&store, buf, len, &h, &rules, &m, &m_cap) != 0) {
             fprintf(stderr, "duel_evolve: mpi: rank %d: a malformed message (tag %d, %zu bytes) from its leader\n",
                     duel_mpi_g.rank, st.MPI_TAG, len);
             free(buf);
             break;
         }
         steps0 = duel_games_steps(dg);
-        err = duel_games_play_nets(dg, store.nets, m, h.count);
+        err = duel_games_set_rules(dg, &rules);
+        if (err == 0)
+            err = duel_games_play_nets(dg, store.nets, m, h.count);
         memset(&r, 0, sizeof r);
         r.magic = DUEL_MPI_RESULT_MAGIC;
         r.count = h.count;

@@ -41,14 +41,16 @@ void duel_wire_store_free(duel_wire_store *s)
     memset(s, 0, sizeof *s);
 }
 
-static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m,
-                                 size_t *m_cap)
+static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_rules *rules,
+                                 duel_match **m, size_t *m_cap)
 {
     size_t pos = sizeof *h, i;
     if (len < sizeof *h)
         return -1;
     memcpy(h, buf, sizeof *h);
     if (h->magic != DUEL_MPI_WORK_MAGIC || h->count == 0 || h->count > len || h->n_new > DUEL_MPI_MAX_NETS)
+        return -1;
+    if (duel_rules_decode(rules, h->rules, sizeof h->rules, NULL) != DUEL_OK)
         return -1;
     if (h->batch != s->batch) {
         duel_wire_clear(s);
@@ -92,11 +94,11 @@ static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, du
     return 0;
 }
 
-int duel_wire_work_take(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m,
-                        size_t *m_cap)
+int duel_wire_work_take(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_rules *rules,
+                        duel_match **m, size_t *m_cap)
 {
     size_t i;
-    if (duel_wire_work_parse(s, buf, len, h, m, m_cap) == 0)
+    if (duel_wire_work_parse(s, buf, len, h, rules, m, m_cap) == 0)
         return 0;
     /* refused: the caller keeps buf, so nothing may point into it (the fuzzer found the networks a bad message
      * named before its error still pointing there) */

@@ -20,6 +20,8 @@ typedef struct duel_work_hdr {
     uint32_t magic, count; /* count: games */
     uint64_t batch, from;  /* the batch's number on the wire, and its first game's index */
     uint32_t n_new, pad;   /* blobs that follow */
+    uint8_t rules[DUEL_RULES_BYTES]; /* the world the games are played in (duel_rules_encode) */
+    uint8_t pad2[(8 - DUEL_RULES_BYTES % 8) % 8];
 } duel_work_hdr;
 
 typedef struct duel_wire_match {
@@ -44,12 +46,12 @@ typedef struct duel_wire_store {
     size_t n_bufs, bufs_cap;
 } duel_wire_store;
 
-/* A WORK message of len bytes taken: its header in *h, its networks kept in s (which then owns buf, on success
- * only), its games in (*m)[0..h->count) (grown as needed). 0, or -1 when any byte is out of place: a wrong magic,
- * a count of 0 or more games than bytes, a length past the end, an id beyond DUEL_MPI_MAX_NETS, a game naming a
- * network it was not sent, bytes left over. */
-int duel_wire_work_take(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_match **m,
-                        size_t *m_cap);
+/* A WORK message of len bytes taken: its header in *h, its world's rules in *rules, its networks kept in s (which
+ * then owns buf, on success only), its games in (*m)[0..h->count) (grown as needed). 0, or -1 when any byte is
+ * out of place: a wrong magic, rules duel_rules_decode refuses, a count of 0 or more games than bytes, a length
+ * past the end, an id beyond DUEL_MPI_MAX_NETS, a game naming a network it was not sent, bytes left over. */
+int duel_wire_work_take(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_hdr *h, duel_rules *rules,
+                        duel_match **m, size_t *m_cap);
 void duel_wire_store_free(duel_wire_store *s);
 
 /* A RESULT message checked against the chunk it answers (batch, from, count): 0 and *h, or -1. */
