@@ -28,7 +28,7 @@ extern "C" {
  * threads: the run is the same.
  */
 
-#define NEAT_COEV_CHECKPOINT_VERSION 2
+#define NEAT_COEV_CHECKPOINT_VERSION 3 /* version 2 still loads */
 
 /* One game for the callback: a plays b. */
 typedef struct neat_game {
@@ -139,6 +139,13 @@ NEAT_API int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat
  * topology, both populations, halls of fame, the species champions the next generation
  * plays, the dominance tournament. Loading it and stepping on gives the same
  * run as never stopping. */
+/* The game-identity tag, as neat_pop_set_game / neat_pop_game (neat.h):
+ * opaque bytes (at most NEAT_GAME_MAX, NEAT_E_ARG beyond) naming the game
+ * the run plays (the duel's world rules), kept in the checkpoint byte for
+ * byte; empty by default and when loaded from a version-2 checkpoint. */
+NEAT_API int neat_coev_set_game(neat_coev *c, const uint8_t *bytes, size_t len);
+NEAT_API const uint8_t *neat_coev_game(const neat_coev *c, size_t *len);
+
 NEAT_API int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);
 NEAT_API void neat_coev_buf_free(const neat_coev *c, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */

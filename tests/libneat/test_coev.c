@@ -764,8 +764,8 @@ static void test_checkpoint_corruption(void **state)
             assert_true(load_error_ok(err));
             assert_null(l);
             assert_true(off <= len);
-            if (i < 12)
-                assert_int_equal(err, NEAT_E_FORMAT); /* magic or version */
+            if (i < 12 && !(i == 8 && bad[8] == 2))
+                assert_int_equal(err, NEAT_E_FORMAT); /* magic or version (3 -> 2 loads: the checksum) */
         }
     /* every truncation refused, and a byte too many */
     for (i = 0; i < len; i++) {
