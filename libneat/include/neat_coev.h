@@ -135,10 +135,6 @@ NEAT_API int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d
  * outputs cannot change; pop_stagnation must stay 0) and the protocol's. */
 NEAT_API int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp);
 
-/* The whole state (docs/formats.md, "Coevolution checkpoint"): the start
- * topology, both populations, halls of fame, the species champions the next generation
- * plays, the dominance tournament. Loading it and stepping on gives the same
- * run as never stopping. */
 /* The game-identity tag, as neat_pop_set_game / neat_pop_game (neat.h):
  * opaque bytes (at most NEAT_GAME_MAX, NEAT_E_ARG beyond) naming the game
  * the run plays (the duel's world rules), kept in the checkpoint byte for
@@ -146,6 +142,10 @@ NEAT_API int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat
 NEAT_API int neat_coev_set_game(neat_coev *c, const uint8_t *bytes, size_t len);
 NEAT_API const uint8_t *neat_coev_game(const neat_coev *c, size_t *len);
 
+/* The whole state (docs/formats.md, "Coevolution checkpoint"): the start
+ * topology, both populations, halls of fame, the species champions the next generation
+ * plays, the dominance tournament. Loading it and stepping on gives the same
+ * run as never stopping. */
 NEAT_API int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len);
 NEAT_API void neat_coev_buf_free(const neat_coev *c, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
