@@ -50,9 +50,12 @@ int bench_finish(bench_result *res, uint64_t evals, uint32_t generations, int er
 /* One evolutionary run each; return 0 or an error code. */
 int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res);
 int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result *res);
-/* the activation micro-benchmark: prints its figures, returns 0 */
-int bench_activation(uint64_t seed, double min_seconds);
+/* --net-step both: each figure for NEAT_STEP_SYNC, then NEAT_STEP_PROPAGATE */
+#define BENCH_STEP_BOTH 2
+/* the activation micro-benchmark in net_step (enum neat_net_step or
+ * BENCH_STEP_BOTH): prints its figures, returns 0 */
+int bench_activation(uint64_t seed, double min_seconds, int net_step);
 /* exactly `steps` steps of the 40- or 200-connection network, for callgrind */
-int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps);
+int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps, int net_step);
 
 #endif /* BENCH_H */

@@ -32,11 +32,13 @@ typedef struct act_ref {
     uint32_t n_nodes, n_conns;
     uint32_t *src, *dst;
     double *w, *act, *sum;
+    int propagate; /* connections grouped by target in the runtime's evaluation order, evaluated in place */
 } act_ref;
 
-static void act_ref_build(act_ref *r, const neat_genome *g)
+static void act_ref_build(act_ref *r, const neat_genome *g, const nrt_net *net)
 {
     uint32_t k;
+    r->propagate = net->order != NULL;
     r->n_nodes = g->n_nodes;
     r->n_conns = g->n_conns;
     r->src = (uint32_t *)malloc(g->n_conns * sizeof(uint32_t));
@@ -49,6 +51,20 @@ static void act_ref_build(act_ref *r, const neat_genome *g)
         r->dst[k] = g->conns[k].out;
         r->w[k] = g->conns[k].weight;
     }
+    if (r->propagate) { /* the same connections, each node's together, nodes in evaluation order */
+        uint32_t p, n = 0;
+        for (p = 0; p < (uint32_t)net->n_nodes - net->n_inputs; p++)
+            for (k = 0; k < g->n_conns; k++)
+                if (g->conns[k].out == net->order[p]) {
+                    r->src[n] = g->conns[k].in;
+                    r->dst[n] = g->conns[k].out;
+                    r->w[n++] = g->conns[k].weight;
+                }
+        /* order[] for the nodes without connections: a zero sum */
+        r->sum = (double *)realloc(r->sum, (size_t)(net->n_nodes - net->n_inputs) * sizeof(double));
+        for (p = 0; p < (uint32_t)net->n_nodes - net->n_inputs; p++)
+            r->sum[p] = net->order[p];
+    }
 }
 
 static void act_ref_step(act_ref *r, const double *in)
@@ -56,6 +72,17 @@ static void act_ref_step(act_ref *r, const double *in)
     uint32_t k, j;
     for (j = 0; j <= ACT_INPUTS; j++)
         r->act[j] = in[j];
+    if (r->propagate) { /* in place: sum[p] holds the p-th node's index */
+        uint32_t p;
+        for (p = 0, k = 0; p < r->n_nodes - ACT_INPUTS - 1; p++) {
+            double s = 0.0;
+            j = (uint32_t)r->sum[p];
+            for (; k < r->n_conns && r->dst[k] == j; k++)
+                s += r->w[k] * r->act[r->src[k]];
+            r->act[j] = 1.0 / (1.0 + exp(-4.9 * s));
+        }
+        return;
+    }
     for (j = ACT_INPUTS + 1; j < r->n_nodes; j++)
         r->sum[j] = 0.0;
     for (k = 0; k < r->n_conns; k++)
@@ -73,8 +100,8 @@ static void act_ref_free(act_ref *r)
     free(r->sum);
 }
 
-static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double min_seconds, double *ns_fixed,
-                   double *ns_double, double *max_diff)
+static int act_one(uint32_t n_hidden, uint32_t n_conns, int net_step, neat_rng *rng, double min_seconds,
+                   double *ns_fixed, double *ns_double, double *max_diff)
 {
     neat_genome g;
     neat_params p = neat_params_default();
@@ -88,6 +115,7 @@ static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double mi
 
     p.n_inputs = ACT_INPUTS;
     p.n_outputs = ACT_OUTPUTS;
+    p.net_step = net_step;
     err = act_genome(&g, n_hidden, n_conns, rng);
     neat_phenotype_init(&ph, NULL);
     if (!err)
@@ -96,7 +124,7 @@ static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double mi
         neat_genome_free(&g, NULL);
         return err;
     }
-    act_ref_build(&ref, &g);
+    act_ref_build(&ref, &g, &ph.net);
     for (j = 0; j <= ACT_INPUTS; j++) {
         din[j] = j == 0 ? 1.0 : neat_from_q15(neat_q15(neat_rng_uniform(rng)));
         in[j] = j == 0 ? NRT_ONE : neat_q15(din[j]);
@@ -155,7 +183,7 @@ static int act_one(uint32_t n_hidden, uint32_t n_conns, neat_rng *rng, double mi
     return 0;
 }
 
-int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps)
+int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps, int net_step)
 {
     /* exactly `steps` runtime steps of one network, nothing timed: under
      * valgrind --tool=callgrind, nrt_step's instructions / steps / conns is
@@ -171,6 +199,7 @@ int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps)
     neat_rng_seed(&rng, seed);
     p.n_inputs = ACT_INPUTS;
     p.n_outputs = ACT_OUTPUTS;
+    p.net_step = net_step;
     if (conns == 40) {
         err = act_genome(&g, 2, 40, &rng);
     } else {
@@ -202,27 +231,48 @@ int bench_activation_count(uint64_t seed, uint32_t conns, uint64_t steps)
     return 0;
 }
 
-int bench_activation(uint64_t seed, double min_seconds)
+/* net_step: NEAT_STEP_SYNC, NEAT_STEP_PROPAGATE, or BENCH_STEP_BOTH (sync's
+ * lines, unchanged, then propagate's). The same two networks either way:
+ * each mode's draws start from the seed. */
+int bench_activation(uint64_t seed, double min_seconds, int net_step)
 {
     neat_rng rng;
-    double f40, d40, e40, f200, d200, e200;
-    int err;
-    neat_rng_seed(&rng, seed);
-    err = act_one(2, 40, &rng, min_seconds, &f40, &d40, &e40);
-    if (!err)
-        err = act_one(20, 200, &rng, min_seconds, &f200, &d200, &e200);
+    double f[2][2], d[2][2], e[2][2];
+    int err = 0, m;
+    static const char *const name[2] = {"", " (propagate)"};
+    for (m = 0; m < 2 && !err; m++) {
+        if (net_step != BENCH_STEP_BOTH && net_step != m)
+            continue;
+        neat_rng_seed(&rng, seed);
+        err = act_one(2, 40, m, &rng, min_seconds, &f[m][0], &d[m][0], &e[m][0]);
+        if (!err)
+            err = act_one(20, 200, m, &rng, min_seconds, &f[m][1], &d[m][1], &e[m][1]);
+    }
     if (err) {
         fprintf(stderr, "neat_bench: activation: cannot build the test networks (%s)\n", neat_strerror(err));
         return 1;
     }
-    printf("40 connections:  fixed point %.3f ns/conn/step, double %.3f ns/conn/step (ratio %.2f), max output diff %.2e\n",
-           f40, d40, d40 / f40, e40);
-    printf("200 connections: fixed point %.3f ns/conn/step, double %.3f ns/conn/step (ratio %.2f), max output diff %.2e\n",
-           f200, d200, d200 / f200, e200);
+    for (m = 0; m < 2; m++) {
+        if (net_step != BENCH_STEP_BOTH && net_step != m)
+            continue;
+        printf("40 connections%s:  fixed point %.3f ns/conn/step, double %.3f ns/conn/step (ratio %.2f), max output diff %.2e\n",
+               name[m], f[m][0], d[m][0], d[m][0] / f[m][0], e[m][0]);
+        printf("200 connections%s: fixed point %.3f ns/conn/step, double %.3f ns/conn/step (ratio %.2f), max output diff %.2e\n",
+               name[m], f[m][1], d[m][1], d[m][1] / f[m][1], e[m][1]);
+    }
+    m = net_step == NEAT_STEP_PROPAGATE ? 1 : 0;
     printf("{\"task\":\"activation\",\"ns_per_conn_step_40\":%.4f,\"ns_per_conn_step_200\":%.4f,"
            "\"double_ns_per_conn_step_40\":%.4f,\"double_ns_per_conn_step_200\":%.4f,"
            "\"max_output_diff_40\":%.3e,\"max_output_diff_200\":%.3e,\"seconds_per_measure\":%.2f,"
-           "\"trials\":%d}\n",
-           f40, f200, d40, d200, e40, e200, min_seconds, ACT_TRIALS);
+           "\"trials\":%d",
+           f[m][0], f[m][1], d[m][0], d[m][1], e[m][0], e[m][1], min_seconds, ACT_TRIALS);
+    if (net_step == NEAT_STEP_PROPAGATE)
+        printf(",\"net_step\":\"propagate\"");
+    if (net_step == BENCH_STEP_BOTH)
+        printf(",\"propagate_ns_per_conn_step_40\":%.4f,\"propagate_ns_per_conn_step_200\":%.4f,"
+               "\"propagate_double_ns_per_conn_step_40\":%.4f,\"propagate_double_ns_per_conn_step_200\":%.4f,"
+               "\"propagate_max_output_diff_40\":%.3e,\"propagate_max_output_diff_200\":%.3e",
+               f[1][0], f[1][1], d[1][0], d[1][1], e[1][0], e[1][1]);
+    printf("}\n");
     return 0;
 }

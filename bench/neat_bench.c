@@ -117,17 +117,19 @@ static int bench_evolve(const char *task, bench_cfg *cfg, int quiet)
         qsort(ev, solved, sizeof ev[0], bench_cmp_u64);
         median = solved % 2 ? (double)ev[solved / 2] : 0.5 * (double)(ev[solved / 2 - 1] + ev[solved / 2]);
     }
-    printf("task %s: %u runs, %u failures (%u errors), seed %llu, %u threads, %.1f s\n", task, cfg->runs,
+    /* a sync run's lines are what they were before the modes (scripts parse them) */
+    const char *mode = cfg->neat.net_step == NEAT_STEP_PROPAGATE ? " (propagate)" : "";
+    printf("task %s%s: %u runs, %u failures (%u errors), seed %llu, %u threads, %.1f s\n", task, mode, cfg->runs,
            cfg->runs - solved, errors, (unsigned long long)cfg->seed, n_threads, secs);
     if (solved)
         printf("solved runs: mean %.1f evaluations, median %.1f, mean %.2f hidden nodes, %.2f connections, %.1f generations\n",
                sum_ev / solved, median, sum_hid / solved, sum_conn / solved, sum_gen / solved);
     printf("{\"task\":\"%s\",\"runs\":%u,\"failures\":%u,\"errors\":%u,\"mean_evaluations\":%.1f,"
            "\"median_evaluations\":%.1f,\"mean_hidden_nodes\":%.3f,\"mean_connections\":%.3f,"
-           "\"mean_generations\":%.2f,\"seed\":%llu,\"threads\":%u,\"seconds\":%.2f}\n",
+           "\"mean_generations\":%.2f,\"seed\":%llu,\"threads\":%u,\"seconds\":%.2f%s}\n",
            task, cfg->runs, cfg->runs - solved, errors, solved ? sum_ev / solved : 0.0, median,
            solved ? sum_hid / solved : 0.0, solved ? sum_conn / solved : 0.0, solved ? sum_gen / solved : 0.0,
-           (unsigned long long)cfg->seed, n_threads, secs);
+           (unsigned long long)cfg->seed, n_threads, secs, *mode ? ",\"net_step\":\"propagate\"" : "");
     free(job.res);
     free(th);
     free(ev);
@@ -140,6 +142,7 @@ static void bench_usage(FILE *f)
                "       neat_bench xor|pole|pole-nv|activation [--runs N] [--seed S] [--threads T]\n"
                "                  [--config FILE.ini] [--dump-config] [--quiet] [--verbose]\n"
                "       neat_bench activation [--count-steps N --connections 40|200]\n"
+               "       (any task) [--net-step sync|propagate|both]\n"
                "Runs NEAT on a benchmark of the NEAT paper (Stanley & Miikkulainen 2002); the last line\n"
                "of stdout is a JSON summary. Defaults: bench/<task>.ini, compiled in.\n"
                "  xor, pole, pole-nv        XOR; double pole balancing with and without velocities (docs/parameters.md)\n"
@@ -152,7 +155,9 @@ static void bench_usage(FILE *f)
                "  --quiet                   only the JSON summary\n"
                "  --verbose                 one line per generation on stderr\n"
                "  --count-steps N           activation: step one network N times (for instruction counts)\n"
-               "  --connections 40|200      activation: which network --count-steps steps\n");
+               "  --connections 40|200      activation: which network --count-steps steps\n"
+               "  --net-step MODE           how networks step: sync, propagate, or both (sync's report, then\n"
+               "                            propagate's); default: the task's ini (net_step; sync)\n");
 }
 
 static int bench_parse_u64(const char *opt, const char *s, uint64_t max, uint64_t *out)
@@ -175,7 +180,7 @@ static int bench_main(int argc, char **argv)
     const char *task, *config = NULL;
     char path[1024];
     uint64_t runs = 0, threads = 0, seed = 1, count_steps = 0, count_conns = 40;
-    int i, have_seed = 0, have_runs = 0, have_threads = 0, quiet = 0, dump = 0, verbose = 0;
+    int i, have_seed = 0, have_runs = 0, have_threads = 0, quiet = 0, dump = 0, verbose = 0, net_step = -1;
 
     if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
         printf("neat_bench %s (libneat %d.%d)\n", NEAT_DUEL_VERSION_STRING, NEAT_VERSION_MAJOR, NEAT_VERSION_MINOR);
@@ -212,7 +217,7 @@ static int bench_main(int argc, char **argv)
         if (i + 1 >= argc) {
             int takes = strcmp(a, "--runs") == 0 || strcmp(a, "--seed") == 0 || strcmp(a, "--threads") == 0 ||
                         strcmp(a, "--config") == 0 || strcmp(a, "--count-steps") == 0 ||
-                        strcmp(a, "--connections") == 0;
+                        strcmp(a, "--connections") == 0 || strcmp(a, "--net-step") == 0;
             fprintf(stderr, takes ? "neat_bench: %s needs a value\n" : "neat_bench: unknown option '%s'\n", a);
             return 2;
         }
@@ -236,6 +241,16 @@ static int bench_main(int argc, char **argv)
                 fprintf(stderr, "neat_bench: --connections must be 40 or 200\n");
                 return 2;
             }
+        } else if (strcmp(a, "--net-step") == 0) {
+            const char *v = argv[++i];
+            net_step = strcmp(v, "sync") == 0        ? NEAT_STEP_SYNC
+                       : strcmp(v, "propagate") == 0 ? NEAT_STEP_PROPAGATE
+                       : strcmp(v, "both") == 0      ? BENCH_STEP_BOTH
+                                                     : -2;
+            if (net_step == -2) {
+                fprintf(stderr, "neat_bench: --net-step must be sync, propagate or both, not '%s'\n", v);
+                return 2;
+            }
         } else if (strcmp(a, "--config") == 0) {
             config = argv[++i];
         } else {
@@ -244,9 +259,14 @@ static int bench_main(int argc, char **argv)
         }
     }
     if (strcmp(task, "activation") == 0) {
-        if (count_steps > 0)
-            return bench_activation_count(seed, (uint32_t)count_conns, count_steps);
-        return bench_activation(seed, 0.5);
+        if (count_steps > 0) {
+            if (net_step == BENCH_STEP_BOTH) {
+                fprintf(stderr, "neat_bench: --count-steps steps one network: --net-step sync or propagate\n");
+                return 2;
+            }
+            return bench_activation_count(seed, (uint32_t)count_conns, count_steps, net_step < 0 ? 0 : net_step);
+        }
+        return bench_activation(seed, 0.5, net_step < 0 ? NEAT_STEP_SYNC : net_step);
     }
 
     memset(&cfg, 0, sizeof cfg);
@@ -274,12 +294,21 @@ static int bench_main(int argc, char **argv)
         cfg.threads = (uint32_t)threads;
     cfg.seed = have_seed ? seed : 1;
     cfg.verbose = verbose;
+    if (net_step == NEAT_STEP_SYNC || net_step == NEAT_STEP_PROPAGATE)
+        cfg.neat.net_step = net_step;
     if (dump) {
         printf("[bench]\n");
         bench_config_dump(stdout, &cfg);
         printf("\n[neat]\n");
         neat_config_dump(stdout, &cfg.neat);
         return 0;
+    }
+    if (net_step == BENCH_STEP_BOTH) {
+        int rc;
+        cfg.neat.net_step = NEAT_STEP_SYNC;
+        rc = bench_evolve(task, &cfg, quiet);
+        cfg.neat.net_step = NEAT_STEP_PROPAGATE;
+        return bench_evolve(task, &cfg, quiet) ? 1 : rc;
     }
     return bench_evolve(task, &cfg, quiet);
 }

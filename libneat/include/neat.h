@@ -33,7 +33,7 @@ extern "C" {
 /* the library's version: the project's (neat_duel_version.h) */
 #define NEAT_VERSION_MAJOR NEAT_DUEL_VERSION_MAJOR
 #define NEAT_VERSION_MINOR NEAT_DUEL_VERSION_MINOR
-#define NEAT_CHECKPOINT_VERSION 2 /* checkpoint format, apart from the code */
+#define NEAT_CHECKPOINT_VERSION 3 /* checkpoint format, apart from the code (version 2 still loads) */
 #define NEAT_GENOME_FILE_VERSION 1 /* genome file format (neat_genome_save) */
 #define NEAT_GENOME_FILE_MAGIC "NEATGENM" /* its first 8 bytes */
 
@@ -114,6 +114,13 @@ enum neat_stagnation {
     NEAT_STAGNATION_IMPROVEMENT = 1
 };
 
+/* How a network steps (the runtime's modes, docs/runtime.md "Semantics"):
+ * what evolution evaluates and what the champion blob records. */
+enum neat_net_step {
+    NEAT_STEP_SYNC = 0,     /* one synchronous propagation a step: a signal takes a step per layer (the paper-era NEAT's) */
+    NEAT_STEP_PROPAGATE = 1 /* feed-forward paths evaluated in order within the step; cycles read the previous step */
+};
+
 typedef struct neat_params {
     uint32_t pop_size;          /* 256 (Appendix A) */
     uint32_t n_inputs;          /* the task's inputs, not counting the bias (default 12: the duel's sensors) */
@@ -151,6 +158,7 @@ typedef struct neat_params {
     uint32_t add_conn_tries;    /* attempts to find an unconnected pair */
     int allow_recurrent;        /* 1 (default): recurrent and self connections may be added; 0: feed-forward only */
     uint32_t max_nodes;         /* never more nodes than the blob format allows (256) */
+    int net_step;               /* enum neat_net_step: NEAT_STEP_SYNC (default) or NEAT_STEP_PROPAGATE */
 } neat_params;
 
 NEAT_API neat_params neat_params_default(void);
@@ -206,8 +214,15 @@ NEAT_API int neat_genome_recurrent_hidden(neat_genome *g, uint32_t n_inputs, uin
 /* The network of a champion blob (validated as nrt_load does) as a genome:
  * nodes and connections kept, node ids as the blob's node indices (bias 0,
  * inputs, outputs, hidden), innovations 0, 1, ... in the blob's connection
- * order, weights the blob's. NEAT_E_FORMAT if the blob is not valid. */
+ * order, weights the blob's. NEAT_E_FORMAT if the blob is not valid. A
+ * genome has no step mode: the blob's (sync or propagate) is dropped, and a
+ * run evaluates the genome in its own params.net_step; a caller that must
+ * not change a champion's behaviour compares the two with
+ * neat_genome_from_blob_step. */
 NEAT_API int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a);
+/* Also the blob's step mode in *net_step (enum neat_net_step; may be NULL). */
+NEAT_API int neat_genome_from_blob_step(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a,
+                                        int *net_step);
 NEAT_API uint32_t neat_genome_hidden_count(const neat_genome *g);
 NEAT_API uint32_t neat_genome_enabled_count(const neat_genome *g);
 /* Compatibility distance delta under p (c1, c2, c3, normalize_by_size). */
@@ -216,10 +231,16 @@ NEAT_API double neat_genome_distance(const neat_genome *a, const neat_genome *b,
 /* ---- phenotype: genome -> champion blob (docs/formats.md) ---------------- */
 /* Bytes the blob of g takes: 32 + 4 per enabled connection. */
 NEAT_API size_t neat_blob_size(const neat_genome *g);
-/* Writes the blob into buf (cap bytes). NEAT_E_TOOBIG if the network has more
- * than 256 nodes or 65535 enabled connections; NEAT_E_ARG if cap is short. */
+/* Writes the blob of a sync network into buf (cap bytes): format version 1.
+ * NEAT_E_TOOBIG if the network has more than 256 nodes or 65535 enabled
+ * connections; NEAT_E_ARG if cap is short. */
 NEAT_API int neat_blob_write(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, uint8_t *buf, size_t cap,
                              size_t *len);
+/* The same for net_step (enum neat_net_step): NEAT_STEP_SYNC gives
+ * neat_blob_write's bytes, NEAT_STEP_PROPAGATE a format-version-2 blob of
+ * the same size (docs/formats.md); NEAT_E_ARG for another value. */
+NEAT_API int neat_blob_write_step(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, int net_step,
+                                  uint8_t *buf, size_t cap, size_t *len);
 
 /* ---- genome file: one genome with all its genes (docs/formats.md) -------
  * Unlike a blob, it keeps what evolution needs: node ids, innovation
@@ -305,6 +326,17 @@ NEAT_API int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len); /* 
 NEAT_API void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
 NEAT_API int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+
+/* The game-identity tag: opaque bytes naming what the run was made with
+ * (e.g. the world rules of a game, which libneat does not know), kept in
+ * the checkpoint byte for byte. Copied in (through the pop's allocator);
+ * empty by default and in checkpoints of version 2. NEAT_E_ARG beyond
+ * NEAT_GAME_MAX bytes or for NULL bytes with len > 0; NEAT_E_NOMEM (the old
+ * tag kept). len 0 empties it. */
+#define NEAT_GAME_MAX 4096u
+NEAT_API int neat_pop_set_game(neat_pop *pop, const uint8_t *bytes, size_t len);
+/* The tag's bytes (NULL when empty) and *len (if not NULL), valid until the next set or free. */
+NEAT_API const uint8_t *neat_pop_game(const neat_pop *pop, size_t *len);
 
 NEAT_API const char *neat_strerror(int err);
 

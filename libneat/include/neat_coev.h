@@ -28,7 +28,7 @@ extern "C" {
  * threads: the run is the same.
  */
 
-#define NEAT_COEV_CHECKPOINT_VERSION 2
+#define NEAT_COEV_CHECKPOINT_VERSION 3 /* version 2 still loads */
 
 /* One game for the callback: a plays b. */
 typedef struct neat_game {
@@ -134,6 +134,13 @@ NEAT_API int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d
 /* New parameters for a resumed run: both populations' (pop_size, inputs and
  * outputs cannot change; pop_stagnation must stay 0) and the protocol's. */
 NEAT_API int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp);
+
+/* The game-identity tag, as neat_pop_set_game / neat_pop_game (neat.h):
+ * opaque bytes (at most NEAT_GAME_MAX, NEAT_E_ARG beyond) naming the game
+ * the run plays (the duel's world rules), kept in the checkpoint byte for
+ * byte; empty by default and when loaded from a version-2 checkpoint. */
+NEAT_API int neat_coev_set_game(neat_coev *c, const uint8_t *bytes, size_t len);
+NEAT_API const uint8_t *neat_coev_game(const neat_coev *c, size_t *len);
 
 /* The whole state (docs/formats.md, "Coevolution checkpoint"): the start
  * topology, both populations, halls of fame, the species champions the next generation

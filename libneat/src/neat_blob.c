@@ -42,11 +42,17 @@ static int32_t neat_quantize(double w)
 
 int neat_blob_write(const neat_genome *g, uint32_t n_in, uint32_t n_out, uint8_t *buf, size_t cap, size_t *len)
 {
+    return neat_blob_write_step(g, n_in, n_out, NEAT_STEP_SYNC, buf, cap, len);
+}
+
+int neat_blob_write_step(const neat_genome *g, uint32_t n_in, uint32_t n_out, int net_step, uint8_t *buf, size_t cap,
+                         size_t *len)
+{
     uint32_t i, k, n = 0, n_hid, nodes;
     size_t size;
     uint32_t crc;
 
-    if (g == NULL || buf == NULL)
+    if (g == NULL || buf == NULL || (net_step != NEAT_STEP_SYNC && net_step != NEAT_STEP_PROPAGATE))
         return NEAT_E_ARG;
     n_hid = neat_genome_hidden_count(g);
     nodes = n_in + 1 + n_out + n_hid;
@@ -63,7 +69,11 @@ int neat_blob_write(const neat_genome *g, uint32_t n_in, uint32_t n_out, uint8_t
     buf[1] = NRT_MAGIC1;
     buf[2] = NRT_MAGIC2;
     buf[3] = NRT_MAGIC3;
-    neat_wr16(buf + NRT_OFF_VERSION, NRT_FORMAT_VERSION);
+    /* a sync blob is version 1, byte for byte as before the modes; a
+     * propagate one version 2 with the step byte set (the runtime computes
+     * its evaluation order from the connections) */
+    neat_wr16(buf + NRT_OFF_VERSION, net_step == NEAT_STEP_SYNC ? NRT_FORMAT_VERSION : NRT_FORMAT_VERSION_PROPAGATE);
+    buf[NRT_OFF_STEP] = (uint8_t)(net_step == NEAT_STEP_SYNC ? NRT_STEP_SYNC : NRT_STEP_PROPAGATE);
     neat_wr16(buf + NRT_OFF_HEADER_SIZE, NRT_HEADER_SIZE);
     neat_wr16(buf + NRT_OFF_INPUTS, n_in + 1);
     neat_wr16(buf + NRT_OFF_OUTPUTS, n_out);
@@ -101,10 +111,15 @@ int neat_blob_write(const neat_genome *g, uint32_t n_in, uint32_t n_out, uint8_t
 
 int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a)
 {
+    return neat_genome_from_blob_step(g, blob, len, a, NULL);
+}
+
+int neat_genome_from_blob_step(neat_genome *g, const uint8_t *blob, size_t len, const neat_alloc *a, int *net_step)
+{
     nrt_net net;
     size_t need = 0;
     void *mem;
-    uint32_t i, k, t;
+    uint32_t i, k;
     int err;
 
     if (g == NULL || blob == NULL)
@@ -119,6 +134,7 @@ int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const
         neat_mem_free(a, mem, need);
         return NEAT_E_FORMAT;
     }
+    neat_mem_free(a, mem, need);
     /* the runtime's node order is the genome's: bias, inputs, outputs, hidden */
     err = NEAT_OK;
     for (i = 0; i < net.n_nodes && !err; i++)
@@ -128,14 +144,17 @@ int neat_genome_from_blob(neat_genome *g, const uint8_t *blob, size_t len, const
                                    : i < (uint32_t)net.n_inputs + net.n_outputs ? NEAT_NODE_OUTPUT
                                                                                  : NEAT_NODE_HIDDEN,
                                    a);
-    /* connections grouped by target: end[t] is one past target t's last */
-    for (t = 0, k = 0; t < (uint32_t)net.n_outputs + net.n_hidden && !err; t++)
-        for (; k < net.end[t] && !err; k++)
-            err = neat_genome_add_conn(g, net.src[k], net.n_inputs + t,
-                                       (double)net.weight[k] / (double)(1 << NRT_WEIGHT_FRAC_BITS), k, 1, a);
-    neat_mem_free(a, mem, need);
+    /* the connections as the blob lists them (nrt_load vouched for every
+     * byte): the genome of a blob is the same whatever its step mode */
+    for (k = 0; k < net.n_conns && !err; k++) {
+        const uint8_t *c = blob + NRT_HEADER_SIZE + NRT_CONN_SIZE * k;
+        int16_t w = (int16_t)(uint16_t)(c[2] | (c[3] << 8));
+        err = neat_genome_add_conn(g, c[0], c[1], (double)w / (double)(1 << NRT_WEIGHT_FRAC_BITS), k, 1, a);
+    }
     if (err)
         neat_genome_free(g, a);
-    /* nrt_load vouched for every index, so only the allocator can fail here */
+    else if (net_step != NULL)
+        *net_step = net.step == NRT_STEP_PROPAGATE ? NEAT_STEP_PROPAGATE : NEAT_STEP_SYNC;
+    /* only the allocator can fail here */
     return err;
 }

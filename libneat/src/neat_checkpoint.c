@@ -44,9 +44,11 @@ static void neat_put_params(neat_wbuf *w, const neat_params *p)
     neat_put_u32(w, p->add_conn_tries);
     neat_put_u32(w, (uint32_t)p->allow_recurrent);
     neat_put_u32(w, p->max_nodes);
+    neat_put_u32(w, (uint32_t)p->net_step); /* version 3 */
 }
 
-static void neat_get_params(neat_rbuf *r, neat_params *p)
+/* version: the checkpoint's; before 3 the networks stepped sync, the only mode */
+static void neat_get_params(neat_rbuf *r, neat_params *p, uint32_t version)
 {
     p->pop_size = neat_get_u32(r);
     p->n_inputs = neat_get_u32(r);
@@ -83,6 +85,7 @@ static void neat_get_params(neat_rbuf *r, neat_params *p)
     p->add_conn_tries = neat_get_u32(r);
     p->allow_recurrent = (int)neat_get_u32(r);
     p->max_nodes = neat_get_u32(r);
+    p->net_step = version >= 3 ? (int)neat_get_u32(r) : NEAT_STEP_SYNC;
 }
 
 /* Largest node id and innovation number a genome uses. */
@@ -138,6 +141,7 @@ int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len)
     neat_put(&w, neat_ckpt_magic, 8);
     neat_put_u32(&w, NEAT_CHECKPOINT_VERSION);
     neat_put_params(&w, &pop->p);
+    neat_put_tag(&w, &pop->game);
     for (i = 0; i < 4; i++)
         neat_put_u64(&w, pop->rng.s[i]);
     neat_put_u32(&w, pop->generation);
@@ -193,6 +197,7 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
     uint32_t i, k, n;
     uint8_t *seen = NULL;
     size_t state_off;
+    uint32_t version;
     int err;
 
     if (out == NULL || buf == NULL)
@@ -201,21 +206,24 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
     memset(&r, 0, sizeof r);
     r.p = buf;
     r.n = len;
-    neat_get_frame(&r, neat_ckpt_magic, NEAT_CHECKPOINT_VERSION);
+    /* version 2 (before net_step and the game tag) still loads: sync, no tag */
+    version = neat_get_frame(&r, neat_ckpt_magic, 2, NEAT_CHECKPOINT_VERSION);
     if (!r.err) {
         size_t at = r.off;
-        neat_get_params(&r, &p);
+        neat_get_params(&r, &p, version);
         if (!r.err && neat_params_check(&p, NULL) != NEAT_OK) {
             r.off = at;
             neat_fail(&r, NEAT_E_FORMAT);
         }
     }
-    state_off = r.off;
     if (!r.err) {
         err = neat_pop_alloc(&pop, &p, alloc);
         if (err)
             neat_fail(&r, err);
     }
+    if (!r.err && version >= 3)
+        neat_get_tag(&r, &pop->a, &pop->game);
+    state_off = r.off;
     if (!r.err) {
         for (i = 0; i < 4; i++)
             pop->rng.s[i] = neat_get_u64(&r);

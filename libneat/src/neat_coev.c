@@ -33,6 +33,7 @@ struct neat_coev {
     uint32_t n_dom, cap_dom;
     neat_game *games; /* scratch for a generation's games */
     uint32_t cap_games;
+    neat_tag game;    /* neat_coev_set_game's bytes */
 };
 
 /* seed-derivation tags, so the streams of different purposes never meet */
@@ -113,6 +114,7 @@ void neat_coev_free(neat_coev *c)
         neat_dom_free(&c->dom[i], &a);
     neat_mem_free(&a, c->dom, (size_t)c->cap_dom * sizeof *c->dom);
     neat_mem_free(&a, c->games, (size_t)c->cap_games * sizeof *c->games);
+    neat_tag_free(&a, &c->game);
     neat_mem_free(&a, c, sizeof *c);
 }
 
@@ -661,6 +663,18 @@ done:
     return err;
 }
 
+int neat_coev_set_game(neat_coev *c, const uint8_t *bytes, size_t len)
+{
+    if (c == NULL)
+        return NEAT_E_ARG;
+    return neat_tag_set(&c->a, &c->game, bytes, len);
+}
+
+const uint8_t *neat_coev_game(const neat_coev *c, size_t *len)
+{
+    return neat_tag_get(&c->game, len);
+}
+
 /* ---- checkpoint ---- */
 
 static const uint8_t neat_coev_magic[8] = {'N', 'E', 'A', 'T', 'C', 'O', 'E', 'V'};
@@ -690,6 +704,7 @@ int neat_coev_save(const neat_coev *c, uint8_t **buf, size_t *len)
     neat_put_u32(&w, c->cp.first_opponents);
     neat_put_u32(&w, c->cp.compare_configs);
     neat_put_u32(&w, (uint32_t)c->cp.random_fitness);
+    neat_put_tag(&w, &c->game); /* version 3 */
     for (i = 0; i < 2; i++) {
         uint8_t *pb = NULL;
         size_t pl = 0;
@@ -759,7 +774,7 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
     const uint8_t *magic;
     const neat_params *pp = NULL;
     const char *field;
-    uint32_t i, k, stored;
+    uint32_t i, k, stored, version = 0;
     int err;
 
     if (out == NULL || buf == NULL)
@@ -774,7 +789,10 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
         r.off = 0;
         neat_fail(&r, NEAT_E_FORMAT);
     }
-    if (!r.err && neat_get_u32(&r) != NEAT_COEV_CHECKPOINT_VERSION && !r.err) {
+    /* version 2 (before the game tag and net_step) still loads: its runs resume */
+    if (!r.err)
+        version = neat_get_u32(&r);
+    if (!r.err && (version < 2 || version > NEAT_COEV_CHECKPOINT_VERSION)) {
         r.off = 8;
         neat_fail(&r, NEAT_E_FORMAT);
     }
@@ -809,6 +827,8 @@ int neat_coev_load(neat_coev **out, const uint8_t *buf, size_t len, const neat_a
             r.off = 20;
             neat_fail(&r, NEAT_E_FORMAT);
         }
+        if (!r.err && version >= 3)
+            neat_get_tag(&r, &c->a, &c->game);
     }
     for (i = 0; i < 2 && !r.err; i++) {
         size_t at = r.off, sub = 0;

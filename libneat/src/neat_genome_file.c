@@ -31,7 +31,7 @@ int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, co
     memset(&r, 0, sizeof r);
     r.p = buf;
     r.n = len;
-    neat_get_frame(&r, (const uint8_t *)NEAT_GENOME_FILE_MAGIC, NEAT_GENOME_FILE_VERSION);
+    (void)neat_get_frame(&r, (const uint8_t *)NEAT_GENOME_FILE_MAGIC, NEAT_GENOME_FILE_VERSION, NEAT_GENOME_FILE_VERSION);
     /* the shape first: neat_get_genome checks the genome against it (bias,
      * inputs and outputs present, at most NRT_MAX_NODES nodes) */
     p = neat_params_default();

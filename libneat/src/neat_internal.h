@@ -79,6 +79,16 @@ typedef struct neat_species {
 } neat_species;
 
 /* ---- the population ---- */
+/* The game-identity tag (neat_game.c): at most NEAT_GAME_MAX bytes, owned. */
+typedef struct neat_tag {
+    uint8_t *bytes; /* NULL when empty */
+    size_t len;
+} neat_tag;
+/* Copies bytes in (the old tag is kept on failure): NEAT_E_ARG beyond NEAT_GAME_MAX. */
+int neat_tag_set(const neat_alloc *a, neat_tag *t, const uint8_t *bytes, size_t len);
+void neat_tag_free(const neat_alloc *a, neat_tag *t);
+const uint8_t *neat_tag_get(const neat_tag *t, size_t *len);
+
 struct neat_pop {
     neat_params p;
     neat_alloc a;
@@ -95,6 +105,7 @@ struct neat_pop {
     uint8_t have_best;
     uint32_t since_pop_improved;
     uint32_t err_index;
+    neat_tag game;        /* neat_pop_set_game's bytes */
 };
 
 /* An empty population holding p and the allocator (neat_pop.c; used by

@@ -198,16 +198,18 @@ void neat_get_genome(neat_rbuf *r, neat_genome *g, const neat_params *p, const n
 }
 
 
-void neat_get_frame(neat_rbuf *r, const uint8_t magic[8], uint32_t version)
+uint32_t neat_get_frame(neat_rbuf *r, const uint8_t magic[8], uint32_t oldest, uint32_t newest)
 {
     const uint8_t *m = neat_get(r, 8), *buf = r->p;
     size_t len = r->n;
-    uint32_t stored;
+    uint32_t stored, version = 0;
     if (m != NULL && memcmp(m, magic, 8) != 0) {
         r->off = 0;
         neat_fail(r, NEAT_E_FORMAT);
     }
-    if (!r->err && neat_get_u32(r) != version && !r->err) {
+    if (!r->err)
+        version = neat_get_u32(r);
+    if (!r->err && (version < oldest || version > newest)) {
         r->off = 8;
         neat_fail(r, NEAT_E_FORMAT);
     }
@@ -216,13 +218,14 @@ void neat_get_frame(neat_rbuf *r, const uint8_t magic[8], uint32_t version)
         neat_fail(r, NEAT_E_TRUNCATED);
     }
     if (r->err)
-        return;
+        return 0;
     stored = (uint32_t)buf[len - 4] | ((uint32_t)buf[len - 3] << 8) | ((uint32_t)buf[len - 2] << 16) |
              ((uint32_t)buf[len - 1] << 24);
     if (nrt_crc32(0, buf, len - 4) != stored) {
         r->off = len - 4;
         neat_fail(r, NEAT_E_CRC);
-        return;
+        return 0;
     }
     r->n = len - 4; /* the body ends at the checksum */
+    return version;
 }

@@ -36,11 +36,16 @@ uint32_t neat_get_u32(neat_rbuf *r);
 uint64_t neat_get_u64(neat_rbuf *r);
 double neat_get_f64(neat_rbuf *r);
 /* The frame of a sealed buffer, before anything else is trusted: magic,
- * version, then the CRC-32 in the last 4 bytes; the body then ends before
- * the checksum. */
-void neat_get_frame(neat_rbuf *r, const uint8_t magic[8], uint32_t version);
+ * a version from oldest to newest (returned; 0 on failure), then the CRC-32
+ * in the last 4 bytes; the body then ends before the checksum. */
+uint32_t neat_get_frame(neat_rbuf *r, const uint8_t magic[8], uint32_t oldest, uint32_t newest);
 /* a count of records of rec_size bytes that must fit in what is left */
 uint32_t neat_get_count(neat_rbuf *r, size_t rec_size);
+
+/* A game tag: its length (u32, at most NEAT_GAME_MAX) and its bytes; a
+ * length read is checked against both before anything is allocated. */
+void neat_put_tag(neat_wbuf *w, const neat_tag *t);
+void neat_get_tag(neat_rbuf *r, const neat_alloc *a, neat_tag *t);
 
 void neat_put_genome(neat_wbuf *w, const neat_genome *g);
 /* Rebuilds through the genome API (a bad id, order or dangling connection

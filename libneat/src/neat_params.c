@@ -44,6 +44,7 @@ neat_params neat_params_default(void)
     p.add_conn_tries = 20;      /* C++ release newlink_tries */
     p.allow_recurrent = 1;
     p.max_nodes = NRT_MAX_NODES;
+    p.net_step = NEAT_STEP_SYNC; /* chosen: the paper-era NEAT's step (docs/parameters.md) */
     return p;
 }
 
@@ -131,6 +132,8 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "allow_recurrent";
     else if (p->max_nodes < p->n_inputs + p->n_outputs + 1 || p->max_nodes > NRT_MAX_NODES)
         bad = "max_nodes";
+    else if (p->net_step != NEAT_STEP_SYNC && p->net_step != NEAT_STEP_PROPAGATE)
+        bad = "net_step";
     if (field != NULL)
         *field = bad;
     return bad == NULL ? NEAT_OK : NEAT_E_PARAM;

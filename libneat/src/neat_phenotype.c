@@ -55,7 +55,7 @@ int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_par
     int err = neat_phenotype_reserve(ph, neat_blob_size(g));
     if (err)
         return err;
-    err = neat_blob_write(g, p->n_inputs, p->n_outputs, ph->blob, ph->blob_cap, &ph->blob_len);
+    err = neat_blob_write_step(g, p->n_inputs, p->n_outputs, p->net_step, ph->blob, ph->blob_cap, &ph->blob_len);
     if (err)
         return err;
     return neat_phenotype_load_own(ph);

@@ -115,6 +115,7 @@ void neat_pop_free(neat_pop *pop)
     neat_mem_free(&a, pop->iv.list, (size_t)pop->iv.cap * sizeof(neat_innov));
     neat_genome_free(&pop->best_ever, &a);
     neat_genome_free(&pop->last_best, &a);
+    neat_tag_free(&a, &pop->game);
     neat_mem_free(&a, pop, sizeof *pop);
 }
 

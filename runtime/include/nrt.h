@@ -33,7 +33,10 @@ extern "C" {
 /* the library's version: the project's (neat_duel_version.h) */
 #define NRT_VERSION_MAJOR NEAT_DUEL_VERSION_MAJOR
 #define NRT_VERSION_MINOR NEAT_DUEL_VERSION_MINOR
-#define NRT_FORMAT_VERSION 1 /* blob format version: the bytes */
+#define NRT_FORMAT_VERSION 1 /* blob format version: the bytes (of a sync network) */
+/* a propagate network's blob: version 1's bytes with the step byte set
+ * (a version-1 loader refuses it rather than run it synchronously) */
+#define NRT_FORMAT_VERSION_PROPAGATE 2
 
 /* the export attribute of the shared libraries (empty in static and firmware builds) */
 #ifndef NRT_API
@@ -71,7 +74,14 @@ typedef int16_t nrt_w12;
 #define NRT_OFF_TOTAL_SIZE 16
 #define NRT_OFF_WEIGHT_BITS 20
 #define NRT_OFF_ACTIVATION 21
-#define NRT_OFF_RESERVED 22 /* 6 bytes, must be zero */
+#define NRT_OFF_RESERVED 22 /* 6 bytes, zero in version 1 */
+#define NRT_OFF_STEP 22     /* version 2: the step mode (NRT_STEP_PROPAGATE); 23..27 zero */
+
+/* How nrt_step evaluates a network (docs/runtime.md, "Semantics"). */
+enum nrt_step_mode {
+    NRT_STEP_SYNC = 0,     /* every node from the previous step's activations (version 1 blobs) */
+    NRT_STEP_PROPAGATE = 1 /* nodes in place in evaluation order: sources already evaluated give this step's value */
+};
 #define NRT_OFF_CRC 28
 
 /* ---- errors ------------------------------------------------------------- */
@@ -81,7 +91,7 @@ enum nrt_error {
     NRT_E_TRUNCATED = -2, /* fewer bytes than the header says */
     NRT_E_MAGIC = -3,    /* not a blob */
     NRT_E_VERSION = -4,  /* a format version this runtime does not know */
-    NRT_E_HEADER = -5,   /* header size, weight format or activation unknown, reserved not zero */
+    NRT_E_HEADER = -5,   /* header size, weight format, activation or step mode unknown, reserved not zero */
     NRT_E_COUNTS = -6,   /* node or connection counts impossible */
     NRT_E_CRC = -7,      /* checksum mismatch */
     NRT_E_INDEX = -8,    /* a connection names a node out of range, or into an input */
@@ -101,11 +111,16 @@ typedef struct nrt_net {
     uint16_t n_hidden;
     uint16_t n_nodes;   /* inputs + outputs + hidden */
     uint16_t n_conns;
-    uint16_t cur;       /* which of act[0], act[1] holds the current step */
+    uint16_t cur;       /* which of act[0], act[1] holds the current step (sync; propagate keeps it) */
     nrt_w12 *weight;    /* [n_conns] */
     uint16_t *src;      /* [n_conns] source node of each connection */
     uint16_t *end;      /* [n_outputs + n_hidden] one past the last connection into each node */
     nrt_q15 *act[2];    /* [n_nodes] activations of the previous and next step */
+    /* NRT_STEP_PROPAGATE only (NULL in sync): order[p] is the node index
+     * evaluated p-th (docs/runtime.md, "Semantics"); a propagate step works
+     * in place on act[cur], which it does not swap. */
+    uint8_t *order;     /* [n_outputs + n_hidden] */
+    uint16_t step;      /* enum nrt_step_mode, from the blob */
 } nrt_net;
 
 /* ---- functions ---------------------------------------------------------- */
@@ -124,16 +139,21 @@ NRT_API int nrt_mem_required(const uint8_t *blob, size_t len, size_t *mem_requir
 
 /* Validates the whole blob (size, magic, version, header, counts, CRC,
  * indices, order) and, only then, lays the network out in mem (any
- * alignment; mem_len >= nrt_mem_required). The network starts reset.
+ * alignment; mem_len >= nrt_mem_required); a propagate network's
+ * evaluation order is computed here (docs/runtime.md). The network starts reset.
  * Returns 0 or a negative nrt_error; on error net is zeroed. */
 NRT_API int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t mem_len);
 
 /* All hidden and output activations back to 0 (start of a game). */
 NRT_API void nrt_reset(nrt_net *net);
 
-/* One synchronous propagation: every non-input node's new activation from the
- * previous step's activations (the inputs being those given now). inputs has
- * n_inputs values, outputs receives n_outputs values (may be NULL). */
+/* One step in the blob's mode. NRT_STEP_SYNC: one synchronous propagation,
+ * every non-input node's new activation from the previous step's activations
+ * (the inputs being those given now). NRT_STEP_PROPAGATE: the nodes in
+ * evaluation order, each from this step's value of a source evaluated
+ * before it (or an input) and the previous step's of any other (itself, a
+ * later node): a feed-forward path reaches the outputs within the step.
+ * inputs has n_inputs values, outputs receives n_outputs values (may be NULL). */
 NRT_API void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs);
 
 /* The n_inputs slots the next nrt_step reads its inputs from: a caller may

@@ -12,8 +12,10 @@
 int nrt_dense_make(nrt_dense *d, const nrt_net *net)
 {
     uint32_t rows, blocks, j, k = 0, cols, tiles = 0, groups;
-    if (d == NULL || net == NULL || net->n_nodes > NRT_DENSE_MAX_NODES || net->n_nodes <= net->n_inputs ||
-        !__builtin_cpu_supports("avx2"))
+    /* a propagate network's step is not one matrix-vector product: its
+     * callers keep nrt_step, which executes the blob's mode */
+    if (d == NULL || net == NULL || net->order != NULL || net->n_nodes > NRT_DENSE_MAX_NODES ||
+        net->n_nodes <= net->n_inputs || !__builtin_cpu_supports("avx2"))
         return NRT_E_ARG;
     rows = (uint32_t)net->n_nodes - net->n_inputs;
     blocks = ((uint32_t)net->n_nodes + 15u) / 16u;

@@ -89,29 +89,44 @@ uint32_t nrt_crc32(uint32_t crc, const void *data, size_t len)
 
 /* Memory nrt_load lays out, all 16-bit arrays: weights and sources of the
  * connections, ends of each node's run, two activation arrays; +1 to align
- * a buffer of any address. */
-static size_t nrt_mem_for(uint32_t nodes, uint32_t non_inputs, uint32_t conns)
+ * a buffer of any address. A propagate network adds its evaluation order,
+ * a byte a non-input node, after them (so a sync network's layout, and its
+ * size, are what they were before the mode existed). */
+static size_t nrt_mem_for(uint32_t nodes, uint32_t non_inputs, uint32_t conns, uint32_t step)
 {
-    return 4u * conns + 2u * non_inputs + 4u * nodes + 1u;
+    return 4u * conns + 2u * non_inputs + 4u * nodes + 1u + (step == NRT_STEP_PROPAGATE ? non_inputs : 0u);
 }
 
 int nrt_inspect(const uint8_t *blob, size_t len, size_t *blob_size, size_t *mem_required)
 {
-    uint32_t n_in, n_out, n_hid, n_conns, nodes, total;
+    uint32_t n_in, n_out, n_hid, n_conns, nodes, total, version, step;
     if (blob == NULL)
         return NRT_E_ARG;
     if (len < NRT_HEADER_SIZE)
         return NRT_E_TRUNCATED;
     if (blob[0] != NRT_MAGIC0 || blob[1] != NRT_MAGIC1 || blob[2] != NRT_MAGIC2 || blob[3] != NRT_MAGIC3)
         return NRT_E_MAGIC;
-    if (nrt_rd16(blob + NRT_OFF_VERSION) != NRT_FORMAT_VERSION)
+    version = nrt_rd16(blob + NRT_OFF_VERSION);
+#ifdef NRT_NO_PROPAGATE
+    /* a sync-only runtime: a propagate blob is a version it does not know */
+    if (version != NRT_FORMAT_VERSION)
         return NRT_E_VERSION;
+#else
+    if (version != NRT_FORMAT_VERSION && version != NRT_FORMAT_VERSION_PROPAGATE)
+        return NRT_E_VERSION;
+#endif
     if (nrt_rd16(blob + NRT_OFF_HEADER_SIZE) != NRT_HEADER_SIZE || blob[NRT_OFF_WEIGHT_BITS] != NRT_WEIGHT_FRAC_BITS ||
         blob[NRT_OFF_ACTIVATION] != NRT_ACT_SIGMOID49)
         return NRT_E_HEADER;
+    /* Version 1 is sync with the step byte zero; version 2 must name
+     * propagate: one encoding per network, and no version-2 blob a
+     * version-1 loader could mistake for sync. */
+    step = blob[NRT_OFF_STEP];
+    if (step != (version == NRT_FORMAT_VERSION ? NRT_STEP_SYNC : NRT_STEP_PROPAGATE))
+        return NRT_E_HEADER;
     {
         int i;
-        for (i = NRT_OFF_RESERVED; i < NRT_OFF_CRC; i++)
+        for (i = NRT_OFF_STEP + 1; i < NRT_OFF_CRC; i++)
             if (blob[i] != 0)
                 return NRT_E_HEADER;
     }
@@ -128,7 +143,7 @@ int nrt_inspect(const uint8_t *blob, size_t len, size_t *blob_size, size_t *mem_
     if (blob_size != NULL)
         *blob_size = total;
     if (mem_required != NULL)
-        *mem_required = nrt_mem_for(nodes, n_out + n_hid, n_conns);
+        *mem_required = nrt_mem_for(nodes, n_out + n_hid, n_conns, step);
     return NRT_OK;
 }
 
@@ -136,6 +151,48 @@ int nrt_mem_required(const uint8_t *blob, size_t len, size_t *mem_required)
 {
     return nrt_inspect(blob, len, NULL, mem_required);
 }
+
+#ifndef NRT_NO_PROPAGATE
+/* A propagate network's evaluation order into net->order. Computed here
+ * rather than stored in the blob: the order is a function of the
+ * connections, so a blob cannot carry one that disagrees with them, a
+ * version-2 blob is a version-1 blob with the step byte set, and there is
+ * nothing more to check. The rule (docs/runtime.md, "Semantics"): place,
+ * one at a time, the lowest-index unplaced node all of whose sources other
+ * than itself are inputs or placed; when none is (only cycles remain), the
+ * lowest-index unplaced node. At most N rounds of N + C checks (202
+ * connections and 27 non-input nodes: under 6,200). src and end are laid
+ * out (target order); act[0], which nrt_reset zeroes next, holds the
+ * placed flags meanwhile. */
+static void nrt_order(nrt_net *net)
+{
+    uint32_t n_in = net->n_inputs, non_in = (uint32_t)net->n_nodes - n_in, p, t, k;
+    uint16_t *placed = (uint16_t *)(void *)net->act[0];
+
+    for (t = 0; t < net->n_nodes; t++)
+        placed[t] = (uint16_t)(t < n_in);
+    for (p = 0; p < non_in; p++) {
+        uint32_t pick = non_in, first = non_in;
+        for (t = 0; t < non_in; t++) {
+            if (placed[n_in + t])
+                continue;
+            if (first == non_in)
+                first = t;
+            for (k = t ? net->end[t - 1u] : 0u; k < net->end[t]; k++)
+                if (net->src[k] != n_in + t && !placed[net->src[k]])
+                    break;
+            if (k == net->end[t]) {
+                pick = t;
+                break;
+            }
+        }
+        if (pick == non_in)
+            pick = first; /* only cycles left: its unplaced sources read the previous step */
+        net->order[p] = (uint8_t)(n_in + pick);
+        placed[n_in + pick] = 1;
+    }
+}
+#endif
 
 int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t mem_len)
 {
@@ -208,6 +265,13 @@ int nrt_load(nrt_net *net, const uint8_t *blob, size_t len, void *mem, size_t me
     for (j = 1; j < nodes - n_in; j++)
         if (net->end[j] < net->end[j - 1])
             net->end[j] = net->end[j - 1];
+#ifndef NRT_NO_PROPAGATE
+    net->step = blob[NRT_OFF_STEP];
+    if (net->step == NRT_STEP_PROPAGATE) {
+        net->order = (uint8_t *)(net->act[1] + nodes);
+        nrt_order(net);
+    }
+#endif
     nrt_reset(net);
     return NRT_OK;
 }

@@ -1,4 +1,4 @@
-/* nrt_step.c - one synchronous fixed-point propagation per time step, and settling for feed-forward tasks. */
+/* nrt_step.c - one fixed-point step of a network (sync or propagate, docs/runtime.md), and settling for feed-forward tasks. */
 #include <string.h>
 
 #include "nrt_internal.h"
@@ -35,6 +35,43 @@ const nrt_q15 *nrt_outputs(const nrt_net *net)
     return net->act[net->cur] + net->n_inputs;
 }
 
+/* The propagate step: in place on the current activations, the nodes in
+ * the loader's evaluation order, so a node evaluated earlier in this step
+ * gives its new value and any other (itself, a later one) its previous one,
+ * exactly the definition (docs/runtime.md). Kept apart from the sync loop so
+ * that loop is what it was; smaller rather than faster (pairs, not fours;
+ * the sigmoid called, not inlined), to keep the runtime within 2 KiB of
+ * Cortex-M0+ code. */
+#ifndef NRT_NO_PROPAGATE
+/* The propagate step: in place on the current activations, the nodes in
+ * the loader's evaluation order, so a source evaluated earlier in this step
+ * (or an input) gives its new value and any other (the node itself, a later
+ * one) its previous one: the definition of docs/runtime.md, word for word.
+ * Kept apart from the sync loop so that one stays what it was, and small
+ * rather than fast (one connection a round, the sigmoid called, not
+ * inlined): Cortex-M0+ flash is the scarce thing (docs/runtime.md, "Size"). */
+static void nrt_step_propagate(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
+{
+    nrt_q15 *a = net->act[net->cur];
+    const uint8_t *o = net->order, *oe = o + (net->n_nodes - net->n_inputs);
+    const uint16_t *end = net->end;
+    uint32_t n_in = net->n_inputs;
+
+    if (inputs != a)
+        memcpy(a, inputs, 2u * n_in);
+    for (; o != oe; o++) {
+        uint32_t t = *o - n_in; /* the node's run: end[t - 1] .. end[t] */
+        uint32_t k = t ? end[t - 1u] : 0u, e = end[t];
+        int64_t sum = 0;
+        for (; k < e; k++)
+            sum += (int32_t)net->weight[k] * a[net->src[k]];
+        a[*o] = nrt_sigmoid(sum);
+    }
+    if (outputs != NULL)
+        memcpy(outputs, a + n_in, 2u * net->n_outputs);
+}
+#endif
+
 void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
 {
     nrt_q15 *prev = net->act[net->cur];
@@ -44,6 +81,12 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
     uint32_t j, non_in = (uint32_t)net->n_nodes - net->n_inputs;
     size_t k = 0; /* size_t: k + 1 can fold into an address */
 
+#ifndef NRT_NO_PROPAGATE
+    if (net->order != NULL) {
+        nrt_step_propagate(net, inputs, outputs);
+        return;
+    }
+#endif
     /* The inputs are part of the state this step reads (already there when
      * the caller wrote them through nrt_inputs). */
     if (inputs != prev)
@@ -83,6 +126,12 @@ int nrt_settle(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs, int max_st
     int s;
     uint32_t j;
     for (s = 1; s <= max_steps; s++) {
+#ifndef NRT_NO_PROPAGATE
+        /* a propagate step works in place: the previous state, to compare
+         * with, is copied aside first */
+        if (net->order != NULL)
+            memcpy(net->act[net->cur ^ 1u], net->act[net->cur], 2u * net->n_nodes);
+#endif
         nrt_step(net, inputs, outputs);
         /* a loop, not memcmp: the runtime needs nothing but memcpy/memset */
         for (j = net->n_inputs; j < net->n_nodes; j++)

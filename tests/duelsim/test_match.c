@@ -33,8 +33,8 @@ typedef struct tm_link {
     double w;
 } tm_link;
 
-/* A network from a list of connections: n_in sensors (+ bias), n_out outputs, no hidden nodes. */
-static void tm_build(tm_net *t, uint32_t n_in, uint32_t n_out, const tm_link *links, size_t n_links)
+/* A network from a list of connections: n_in sensors (+ bias), n_out outputs, no hidden nodes; step: enum neat_net_step. */
+static void tm_build_step(tm_net *t, uint32_t n_in, uint32_t n_out, const tm_link *links, size_t n_links, int step)
 {
     neat_genome g;
     size_t need = 0;
@@ -46,11 +46,16 @@ static void tm_build(tm_net *t, uint32_t n_in, uint32_t n_out, const tm_link *li
     }
     for (i = 0; i < n_links; i++)
         assert_int_equal(neat_genome_add_conn(&g, links[i].in, links[i].out, links[i].w, i, 1, NULL), NEAT_OK);
-    assert_int_equal(neat_blob_write(&g, n_in, n_out, t->blob, sizeof t->blob, &t->len), NEAT_OK);
+    assert_int_equal(neat_blob_write_step(&g, n_in, n_out, step, t->blob, sizeof t->blob, &t->len), NEAT_OK);
     assert_int_equal(nrt_mem_required(t->blob, t->len, &need), NRT_OK);
     assert_true(need <= sizeof t->mem);
     assert_int_equal(nrt_load(&t->net, t->blob, t->len, t->mem, sizeof t->mem), NRT_OK);
     neat_genome_free(&g, NULL);
+}
+
+static void tm_build(tm_net *t, uint32_t n_in, uint32_t n_out, const tm_link *links, size_t n_links)
+{
+    tm_build_step(t, n_in, n_out, links, n_links, NEAT_STEP_SYNC);
 }
 
 /* Goes straight, speed from the bias and the sensors that are their own
@@ -340,6 +345,48 @@ static void test_deterministic(void **state)
     test_free(n2);
 }
 
+/* Networks without hidden nodes, whose only cycles are self-connections,
+ * act the same in both step modes (an output reads the inputs of now and
+ * its own last value either way). The propagate ones, which duel_play
+ * cannot give to the dense step (nrt_dense_make refuses them), play step
+ * for step the games of the sync ones, which take the dense step where
+ * there is one: the fallback to nrt_step runs the blob's mode. */
+static void test_propagate_nets_play(void **state)
+{
+    tm_net *s1 = test_malloc(sizeof *s1), *s2 = test_malloc(sizeof *s2);
+    tm_net *p1 = test_malloc(sizeof *p1), *p2 = test_malloc(sizeof *p2);
+    tm_trace *ts = tm_trace_new(), *tp = tm_trace_new();
+    duel_controller a, b, c, d;
+    duel_result rs, rp;
+    duel_tally cs, cp;
+    (void)state;
+    tm_build(s1, 12, 3, tm_turner, sizeof tm_turner / sizeof tm_turner[0]);
+    tm_build(s2, 12, 3, tm_straight, sizeof tm_straight / sizeof tm_straight[0]);
+    tm_build_step(p1, 12, 3, tm_turner, sizeof tm_turner / sizeof tm_turner[0], NEAT_STEP_PROPAGATE);
+    tm_build_step(p2, 12, 3, tm_straight, sizeof tm_straight / sizeof tm_straight[0], NEAT_STEP_PROPAGATE);
+    assert_int_equal(p1->net.step, NRT_STEP_PROPAGATE);
+    a = tm_netc(s1);
+    b = tm_netc(s2);
+    c = tm_netc(p1);
+    d = tm_netc(p2);
+    assert_int_equal(duel_play(&a, &b, 50, &rs, tm_record, ts), DUEL_OK);
+    assert_int_equal(duel_play(&c, &d, 50, &rp, tm_record, tp), DUEL_OK);
+    tm_same_result(&rs, &rp);
+    assert_int_equal(ts->n, tp->n);
+    assert_true(ts->hash == tp->hash);
+    assert_memory_equal(ts->out, tp->out, sizeof ts->out);
+    b = tm_builtin(DUEL_FORAGER_HUNTER);
+    assert_int_equal(duel_compare(&a, &b, &cs), DUEL_OK);
+    assert_int_equal(duel_compare(&c, &b, &cp), DUEL_OK);
+    assert_memory_equal(&cs, &cp, sizeof cs);
+    test_free(ts);
+    test_free(tp);
+    test_free(s1);
+    test_free(s2);
+    test_free(p1);
+    test_free(p2);
+}
+
 /* Every step of a game between two copies of one mirror-symmetric network
  * on mirror-symmetric food is a mirror image: x_west = 600 - x_east,
  * y equal, heading_west = pi - heading_east, energies and meals equal,
@@ -527,6 +574,7 @@ int main(void)
         cmocka_unit_test(test_compare_counts_games),
         cmocka_unit_test(test_compare_idle),
         cmocka_unit_test(test_deterministic),
+        cmocka_unit_test(test_propagate_nets_play),
         cmocka_unit_test(test_mirror_straight),
         cmocka_unit_test(test_mirror_turning),
         cmocka_unit_test(test_same_net_refused),

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include "neat.h"
+#include "neat_phenotype.h"
 #include "nrt.h"
 
 static int16_t blob_weight(const uint8_t *b, uint32_t k)
@@ -114,6 +115,44 @@ static void test_too_many_nodes(void **state)
     neat_genome_free(&g, NULL);
 }
 
+/* net_step: sync by default, checked; the phenotype encodes the run's
+ * mode, so evolution evaluates what the blob records. */
+static void test_net_step_param(void **state)
+{
+    neat_params p = neat_params_default();
+    neat_phenotype ph;
+    neat_genome g;
+    const char *field = NULL;
+    uint8_t buf[256];
+    size_t len;
+    (void)state;
+    assert_int_equal(p.net_step, NEAT_STEP_SYNC);
+    p.net_step = 2;
+    assert_int_equal(neat_params_check(&p, &field), NEAT_E_PARAM);
+    assert_string_equal(field, "net_step");
+    p.net_step = -1;
+    assert_int_equal(neat_params_check(&p, &field), NEAT_E_PARAM);
+    p.net_step = NEAT_STEP_PROPAGATE;
+    assert_int_equal(neat_params_check(&p, &field), NEAT_OK);
+    p.n_inputs = 2;
+    p.n_outputs = 1;
+    assert_int_equal(neat_genome_minimal(&g, 2, 1, NULL), NEAT_OK);
+    neat_phenotype_init(&ph, NULL);
+    assert_int_equal(neat_phenotype_load(&ph, &g, &p), NEAT_OK);
+    assert_int_equal(ph.net.step, NRT_STEP_PROPAGATE);
+    assert_int_equal(ph.blob[NRT_OFF_VERSION], NRT_FORMAT_VERSION_PROPAGATE);
+    p.net_step = NEAT_STEP_SYNC;
+    assert_int_equal(neat_phenotype_load(&ph, &g, &p), NEAT_OK);
+    assert_int_equal(ph.net.step, NRT_STEP_SYNC);
+    assert_null(ph.net.order);
+    assert_int_equal(neat_blob_write(&g, 2, 1, buf, sizeof buf, &len), NEAT_OK);
+    assert_int_equal(len, ph.blob_len);
+    assert_memory_equal(buf, ph.blob, len); /* sync: neat_blob_write's bytes */
+    assert_int_equal(neat_blob_write_step(&g, 2, 1, 2, buf, sizeof buf, &len), NEAT_E_ARG);
+    neat_phenotype_free(&ph);
+    neat_genome_free(&g, NULL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -122,6 +161,7 @@ int main(void)
         cmocka_unit_test(test_runtime_accepts_it),
         cmocka_unit_test(test_layout_must_match),
         cmocka_unit_test(test_too_many_nodes),
+        cmocka_unit_test(test_net_step_param),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -266,9 +266,11 @@ static void test_single_byte_corruption_rejected(void **state)
             if (i < 8) { /* magic */
                 assert_int_equal(err, NEAT_E_FORMAT);
                 assert_int_equal(off, 0);
-            } else if (i < 12) { /* version */
+            } else if (i < 12 && !(i == 8 && (buf[8] ^ flips[f]) == 2)) { /* version */
                 assert_int_equal(err, NEAT_E_FORMAT);
                 assert_int_equal(off, 8);
+            } else if (i == 8) { /* 3 -> 2, a version that loads: the checksum catches it */
+                assert_int_equal(err, NEAT_E_CRC);
             } else { /* body or checksum: the checksum is where it shows */
                 if (err != NEAT_E_CRC)
                     fail_msg("byte %zu ^ 0x%02x: error %d", i, flips[f], err);
@@ -304,7 +306,8 @@ static void test_bad_magic(void **state)
 
 static void test_bad_version(void **state)
 {
-    static const uint8_t versions[][4] = {{0, 0, 0, 0}, {1, 0, 0, 0}, {3, 0, 0, 0}, {2, 0, 0, 1}};
+    /* 2 and 3 load (tests of version 2: test_version2_loads) */
+    static const uint8_t versions[][4] = {{0, 0, 0, 0}, {1, 0, 0, 0}, {4, 0, 0, 0}, {3, 0, 0, 1}};
     neat_pop *pop = evolved_pop(10, 1, 35), *out = NULL;
     uint8_t *buf;
     size_t len, off, k;
@@ -522,6 +525,158 @@ static void test_load_rejects_null_arguments(void **state)
     assert_int_equal(neat_pop_save(NULL, NULL, NULL), NEAT_E_ARG);
 }
 
+/* ---- version 3: net_step and the game tag ---- */
+
+/* Where version 3 puts net_step: after the 228 bytes of version 2's
+ * parameters (13 u32, 22 f64) behind magic and version; the tag's length next. */
+#define CK_NET_STEP_OFF 240u
+
+/* A version-3 checkpoint with net_step sync and an empty tag, rewritten as
+ * version 2 wrote it: without those 8 bytes. */
+static size_t ck_to_v2(const uint8_t *v3, size_t len, uint8_t *out)
+{
+    static const uint8_t zero[8] = {0};
+    assert_memory_equal(v3 + CK_NET_STEP_OFF, zero, 8);
+    memcpy(out, v3, CK_NET_STEP_OFF);
+    memcpy(out + CK_NET_STEP_OFF, v3 + CK_NET_STEP_OFF + 8, len - CK_NET_STEP_OFF - 8);
+    out[8] = 2;
+    reseal(out, len - 8);
+    return len - 8;
+}
+
+/* A run saved before this version (checkpoint version 2) still loads, as a
+ * sync run with an empty tag, and goes on as it would have: saved again it
+ * is the version-3 checkpoint of the same state. */
+static void test_version2_loads(void **state)
+{
+    neat_pop *pop = evolved_pop(12, 3, 71), *out;
+    uint8_t *buf, *v2, *again;
+    size_t len, l2, la, tl = 99;
+    (void)state;
+    save(pop, &buf, &len);
+    assert_int_equal(buf[CK_NET_STEP_OFF - 4], 0); /* max_nodes' high byte: the layout is what we think */
+    v2 = (uint8_t *)malloc(len);
+    assert_non_null(v2);
+    l2 = ck_to_v2(buf, len, v2);
+    out = load_ok(v2, l2);
+    assert_int_equal(neat_pop_params(out)->net_step, NEAT_STEP_SYNC);
+    assert_null(neat_pop_game(out, &tl));
+    assert_int_equal(tl, 0);
+    save(out, &again, &la);
+    assert_int_equal(la, len);
+    assert_memory_equal(again, buf, len);
+    /* and both go on to the same generation */
+    run_generations(pop, 2);
+    run_generations(out, 2);
+    assert_same_bytes(pop, out);
+    neat_pop_buf_free(out, again, la);
+    neat_pop_free(out);
+    free(v2);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+/* The tag and net_step survive save and load byte for byte; at most
+ * NEAT_GAME_MAX bytes; copied in (the caller's buffer may change after). */
+static void test_game_tag_round_trip(void **state)
+{
+    static uint8_t tag[NEAT_GAME_MAX + 1];
+    neat_params p = ckpt_params(10);
+    neat_pop *pop = NULL, *out;
+    uint8_t *buf, *again;
+    const uint8_t *got;
+    size_t len, la, i, tl = 0;
+    (void)state;
+    p.net_step = NEAT_STEP_PROPAGATE;
+    assert_int_equal(neat_pop_create(&pop, &p, NULL, 5, NULL), NEAT_OK);
+    assert_null(neat_pop_game(pop, &tl)); /* empty by default */
+    assert_int_equal(tl, 0);
+    for (i = 0; i < sizeof tag; i++)
+        tag[i] = (uint8_t)(i * 37u + (i >> 8));
+    assert_int_equal(neat_pop_set_game(pop, tag, NEAT_GAME_MAX + 1), NEAT_E_ARG);
+    assert_int_equal(neat_pop_set_game(pop, NULL, 3), NEAT_E_ARG);
+    assert_int_equal(neat_pop_set_game(NULL, tag, 3), NEAT_E_ARG);
+    assert_int_equal(neat_pop_set_game(pop, tag, NEAT_GAME_MAX), NEAT_OK);
+    assert_int_equal(neat_pop_set_game(pop, tag, 301), NEAT_OK); /* replaces it */
+    tag[0] ^= 0xFF; /* copied in: the caller's bytes are its own */
+    got = neat_pop_game(pop, &tl);
+    assert_int_equal(tl, 301);
+    assert_int_equal(got[0], (uint8_t)(tag[0] ^ 0xFF));
+    assert_memory_equal(got + 1, tag + 1, 300);
+    run_generations(pop, 2);
+    save(pop, &buf, &len);
+    out = load_ok(buf, len);
+    assert_int_equal(neat_pop_params(out)->net_step, NEAT_STEP_PROPAGATE);
+    got = neat_pop_game(out, &tl);
+    assert_int_equal(tl, 301);
+    assert_memory_equal(got, neat_pop_game(pop, NULL), 301);
+    save(out, &again, &la);
+    assert_int_equal(la, len);
+    assert_memory_equal(again, buf, len);
+    neat_pop_buf_free(out, again, la);
+    assert_int_equal(neat_pop_set_game(out, NULL, 0), NEAT_OK); /* emptied */
+    assert_null(neat_pop_game(out, &tl));
+    assert_int_equal(tl, 0);
+    neat_pop_free(out);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
+/* The tag's length is never trusted: every truncation of a tagged
+ * checkpoint, and resealed lengths beyond NEAT_GAME_MAX or the bytes left,
+ * are refused without reading past the buffer. */
+static void test_game_tag_hostile(void **state)
+{
+    static const uint32_t lens[] = {NEAT_GAME_MAX + 1u, 0xFFFFFFFFu, 0x80000000u, 4000u};
+    neat_pop *pop = evolved_pop(8, 1, 72), *out;
+    uint8_t *buf, *bad;
+    size_t len, n, off, k;
+    (void)state;
+    assert_int_equal(neat_pop_set_game(pop, (const uint8_t *)"world-rules v1", 14), NEAT_OK);
+    save(pop, &buf, &len);
+    for (n = 0; n < len; n++) {
+        bad = (uint8_t *)malloc(n + 1);
+        assert_non_null(bad);
+        memcpy(bad, buf, n);
+        out = NULL;
+        assert_true(neat_pop_load(&out, bad, n, NULL, &off) != NEAT_OK);
+        assert_null(out);
+        free(bad);
+    }
+    bad = (uint8_t *)malloc(len);
+    assert_non_null(bad);
+    for (k = 0; k < sizeof lens / sizeof lens[0]; k++) {
+        int err;
+        memcpy(bad, buf, len);
+        bad[CK_NET_STEP_OFF + 4] = (uint8_t)lens[k];
+        bad[CK_NET_STEP_OFF + 5] = (uint8_t)(lens[k] >> 8);
+        bad[CK_NET_STEP_OFF + 6] = (uint8_t)(lens[k] >> 16);
+        bad[CK_NET_STEP_OFF + 7] = (uint8_t)(lens[k] >> 24);
+        reseal(bad, len);
+        out = NULL;
+        off = 0;
+        err = neat_pop_load(&out, bad, len, NULL, &off);
+        assert_true(err == NEAT_E_FORMAT || err == NEAT_E_TRUNCATED);
+        assert_int_equal(off, CK_NET_STEP_OFF + 4); /* at the length */
+        assert_null(out);
+    }
+    /* a shorter length: the tag is then other bytes and the rest misparses, refused somewhere */
+    memcpy(bad, buf, len);
+    bad[CK_NET_STEP_OFF + 4] = 3;
+    reseal(bad, len);
+    out = NULL;
+    assert_true(neat_pop_load(&out, bad, len, NULL, NULL) != NEAT_OK);
+    assert_null(out);
+    /* an unknown net_step */
+    memcpy(bad, buf, len);
+    bad[CK_NET_STEP_OFF] = 2;
+    reseal(bad, len);
+    assert_int_equal(neat_pop_load(&out, bad, len, NULL, &off), NEAT_E_FORMAT);
+    free(bad);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -540,6 +695,9 @@ int main(void)
         cmocka_unit_test(test_load_rejects_bad_delta_t),
         cmocka_unit_test(test_load_rejects_zero_rng_state),
         cmocka_unit_test(test_load_rejects_null_arguments),
+        cmocka_unit_test(test_version2_loads),
+        cmocka_unit_test(test_game_tag_round_trip),
+        cmocka_unit_test(test_game_tag_hostile),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

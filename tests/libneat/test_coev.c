@@ -764,8 +764,8 @@ static void test_checkpoint_corruption(void **state)
             assert_true(load_error_ok(err));
             assert_null(l);
             assert_true(off <= len);
-            if (i < 12)
-                assert_int_equal(err, NEAT_E_FORMAT); /* magic or version */
+            if (i < 12 && !(i == 8 && bad[8] == 2))
+                assert_int_equal(err, NEAT_E_FORMAT); /* magic or version (3 -> 2 loads: the checksum) */
         }
     /* every truncation refused, and a byte too many */
     for (i = 0; i < len; i++) {
@@ -1288,6 +1288,139 @@ static void test_create_and_params_check(void **state)
     neat_coev_free(c);
 }
 
+/* ---- checkpoint version 3: the game tag; version 2 still loads ---- */
+
+static uint32_t tc_rd32(const uint8_t *p)
+{
+    return (uint32_t)p[0] | ((uint32_t)p[1] << 8) | ((uint32_t)p[2] << 16) | ((uint32_t)p[3] << 24);
+}
+
+static void tc_wr32(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)v;
+    p[1] = (uint8_t)(v >> 8);
+    p[2] = (uint8_t)(v >> 16);
+    p[3] = (uint8_t)(v >> 24);
+}
+
+static void tc_seal(uint8_t *buf, size_t len)
+{
+    tc_wr32(buf + len - 4, nrt_crc32(0, buf, len - 4));
+}
+
+/* A version-3 coevolution checkpoint (sync, empty tags) as version 2 wrote
+ * it: no tag after the protocol's parameters (offset 44), and each
+ * embedded population checkpoint without net_step and its tag (8 bytes at
+ * its offset 240), at version 2. Returns the new length. */
+static size_t tc_to_v2(const uint8_t *b, size_t len, uint8_t *out)
+{
+    size_t o = 48, n = 44;
+    uint32_t i;
+    memcpy(out, b, 44);
+    tc_wr32(out + 8, 2);
+    assert_int_equal(tc_rd32(b + 44), 0);
+    for (i = 0; i < 2; i++) {
+        uint32_t pl = tc_rd32(b + o);
+        const uint8_t *p = b + o + 4;
+        assert_int_equal(tc_rd32(p + 8), 3);
+        assert_int_equal(tc_rd32(p + 240), NEAT_STEP_SYNC);
+        assert_int_equal(tc_rd32(p + 244), 0);
+        tc_wr32(out + n, pl - 8);
+        memcpy(out + n + 4, p, 240);
+        memcpy(out + n + 4 + 240, p + 248, pl - 248);
+        tc_wr32(out + n + 4 + 8, 2);
+        tc_seal(out + n + 4, pl - 8);
+        n += 4 + pl - 8;
+        o += 4 + pl;
+    }
+    memcpy(out + n, b + o, len - o);
+    n += len - o;
+    tc_seal(out, n);
+    return n;
+}
+
+/* A run checkpointed before the game tag (version 2) resumes: empty tag,
+ * sync networks, and saved again the version-3 bytes of the same state. */
+static void test_checkpoint_version2_loads(void **state)
+{
+    uint8_t *buf, *v2;
+    size_t len, l2, off = 0, tl = 7;
+    neat_coev *c = tiny_coev(5, &buf, &len), *l = NULL;
+    (void)state;
+    v2 = (uint8_t *)malloc(len);
+    assert_non_null(v2);
+    l2 = tc_to_v2(buf, len, v2);
+    assert_int_equal(l2, len - 20);
+    assert_int_equal(neat_coev_load(&l, v2, l2, NULL, &off), NEAT_OK);
+    assert_null(neat_coev_game(l, &tl));
+    assert_int_equal(tl, 0);
+    assert_save_is(l, buf, len);
+    neat_coev_free(l);
+    free(v2);
+    neat_coev_buf_free(c, buf, len);
+    neat_coev_free(c);
+}
+
+/* The tag: copied in, NEAT_E_ARG beyond NEAT_GAME_MAX, in the checkpoint
+ * byte for byte and through further generations; its length never
+ * trusted: every truncation and a resealed length beyond the bytes left
+ * are refused. */
+static void test_checkpoint_game_tag(void **state)
+{
+    static uint8_t tag[NEAT_GAME_MAX + 1];
+    uint8_t *buf, *b2, *bad;
+    size_t len, l2, i, tl = 0, off;
+    neat_coev *c = tiny_coev(6, &buf, &len), *l = NULL;
+    const uint8_t *got;
+    (void)state;
+    neat_coev_buf_free(c, buf, len);
+    for (i = 0; i < sizeof tag; i++)
+        tag[i] = (uint8_t)(255u - i % 251u);
+    assert_null(neat_coev_game(c, &tl));
+    assert_int_equal(neat_coev_set_game(c, tag, NEAT_GAME_MAX + 1), NEAT_E_ARG);
+    assert_int_equal(neat_coev_set_game(c, NULL, 1), NEAT_E_ARG);
+    assert_int_equal(neat_coev_set_game(NULL, tag, 1), NEAT_E_ARG);
+    assert_int_equal(neat_coev_set_game(c, tag, NEAT_GAME_MAX), NEAT_OK);
+    tag[5] ^= 1;
+    save(c, &buf, &len);
+    assert_int_equal(tc_rd32(buf + 44), NEAT_GAME_MAX);
+    assert_int_equal(neat_coev_load(&l, buf, len, NULL, &off), NEAT_OK);
+    got = neat_coev_game(l, &tl);
+    assert_int_equal(tl, NEAT_GAME_MAX);
+    assert_int_equal(got[5], (uint8_t)(tag[5] ^ 1));
+    assert_memory_equal(got, neat_coev_game(c, NULL), NEAT_GAME_MAX);
+    assert_save_is(l, buf, len);
+    steps(l, 1); /* a generation keeps it */
+    save(l, &b2, &l2);
+    assert_int_equal(tc_rd32(b2 + 44), NEAT_GAME_MAX);
+    assert_memory_equal(b2 + 48, neat_coev_game(c, NULL), NEAT_GAME_MAX);
+    neat_coev_buf_free(l, b2, l2);
+    neat_coev_free(l);
+    for (i = 0; i < len; i += 1 + (i > 60 && i < 44 + NEAT_GAME_MAX ? 97 : 0)) {
+        bad = (uint8_t *)malloc(i + 1);
+        assert_non_null(bad);
+        memcpy(bad, buf, i);
+        l = (neat_coev *)&l;
+        assert_true(load_error_ok(neat_coev_load(&l, bad, i, NULL, &off)));
+        assert_null(l);
+        free(bad);
+    }
+    bad = (uint8_t *)malloc(len);
+    assert_non_null(bad);
+    memcpy(bad, buf, len);
+    tc_wr32(bad + 44, NEAT_GAME_MAX + 1);
+    tc_seal(bad, len);
+    assert_int_equal(neat_coev_load(&l, bad, len, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 44);
+    tc_wr32(bad + 44, 0xFFFFFFF0u); /* more than the bytes left: refused before any allocation */
+    tc_seal(bad, len);
+    assert_int_equal(neat_coev_load(&l, bad, len, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 44);
+    free(bad);
+    neat_coev_buf_free(c, buf, len);
+    neat_coev_free(c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1299,6 +1432,8 @@ int main(void)
         cmocka_unit_test(test_checkpoint_resume),
         cmocka_unit_test(test_checkpoint_corruption),
         cmocka_unit_test(test_checkpoint_resealed),
+        cmocka_unit_test(test_checkpoint_version2_loads),
+        cmocka_unit_test(test_checkpoint_game_tag),
         cmocka_unit_test(test_play_error),
         cmocka_unit_test(test_alloc_failure_in_step),
         cmocka_unit_test(test_alloc_failure_create_load),

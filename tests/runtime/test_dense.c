@@ -411,6 +411,17 @@ static void test_dense_refuses(void **state)
     td_make(t, 13, 3, 0, 8, &seed);
     t->net.n_nodes = NRT_DENSE_MAX_NODES + 1;
     assert_int_equal(nrt_dense_make(&d, &t->net), NRT_E_ARG);
+    /* a propagate network (an evaluation order): not one matrix product */
+    td_make(t, 13, 3, 0, 8, &seed);
+    assert_int_equal(nrt_dense_make(&d, &t->net), NRT_OK);
+    {
+        uint8_t order[3] = {13, 14, 15};
+        t->net.order = order;
+        t->net.step = NRT_STEP_PROPAGATE;
+        assert_int_equal(nrt_dense_make(&d, &t->net), NRT_E_ARG);
+        t->net.order = NULL;
+        t->net.step = NRT_STEP_SYNC;
+    }
     /* 51 rows, where the first of each eight has one connection in each
      * block of 16 columns: every tile of the matrix to multiply for 28
      * connections, which the list steps faster */

@@ -212,18 +212,22 @@ static void test_bad_magic(void **state)
     }
 }
 
-/* Format version 2 (and 0): NRT_E_VERSION. */
+/* Format versions 0 and 3: NRT_E_VERSION; version 2 with the step byte of
+ * a sync blob (0) is no blob either: NRT_E_HEADER (one encoding per network). */
 static void test_bad_version(void **state)
 {
     ld_blob s;
     (void)state;
     ld_sample(&s);
-    ld_wr16(s.b + NRT_OFF_VERSION, 2);
+    ld_wr16(s.b + NRT_OFF_VERSION, 3);
     ld_fix_crc(&s);
     assert_int_equal(ld_load(&s), NRT_E_VERSION);
     ld_wr16(s.b + NRT_OFF_VERSION, 0);
     ld_fix_crc(&s);
     assert_int_equal(ld_load(&s), NRT_E_VERSION);
+    ld_wr16(s.b + NRT_OFF_VERSION, 2);
+    ld_fix_crc(&s);
+    assert_int_equal(ld_load(&s), NRT_E_HEADER);
 }
 
 /* A nonzero reserved byte, or an unknown header size, weight format or activation: NRT_E_HEADER. */

@@ -189,8 +189,8 @@ config)
   mkdir "$tmp/v1"
   "$duel" config --dump --config "$configs/quick.ini" > "$tmp/v1/config.ini"
   { printf 'NEATCOEV\001\000\000\000'; head -c 100 /dev/zero; } > "$tmp/v1/checkpoint.bin"
-  expect_bad "checkpoint.bin: offset 8: checkpoint format 1, but this duel_evolve reads format 2" resume "$tmp/v1"
-  expect_bad "checkpoint.bin: offset 8: checkpoint format 1, but this duel_evolve reads format 2" inspect "$tmp/v1"
+  expect_bad "checkpoint.bin: offset 8: checkpoint format 1, but this duel_evolve reads format 3" resume "$tmp/v1"
+  expect_bad "checkpoint.bin: offset 8: checkpoint format 1, but this duel_evolve reads format 3" inspect "$tmp/v1"
   # every preset is paper.ini but for its documented keys
   for p in fixed-10:mode=fixed,start=hidden:10:bias fixed-5:mode=fixed,start=hidden:5:inputs \
            simplifying:mode=simplify,start=hidden:12:bias random-fitness:random_fitness=true \

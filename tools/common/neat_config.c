@@ -11,6 +11,7 @@
 
 static const char *const neat_mode_names[] = {"complexify", "fixed", "simplify"};
 static const char *const neat_stagnation_names[] = {"oldest-worst", "improvement"};
+static const char *const neat_net_step_names[] = {"sync", "propagate"}; /* enum neat_net_step */
 
 static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(pop_size, NEAT_CFG_U32, 2, 1000000),
@@ -48,6 +49,7 @@ static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(add_conn_tries, NEAT_CFG_U32, 0, 1000),
     NEAT_KEY(allow_recurrent, NEAT_CFG_BOOL, 0, 1),
     NEAT_KEY(max_nodes, NEAT_CFG_U32, 2, 256),
+    NEAT_ENUM(net_step, neat_net_step_names, 2),
 };
 #define NEAT_N_KEYS (sizeof neat_keys / sizeof neat_keys[0])
 
