@@ -72,7 +72,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             for (i = 0; i < c.n; i++)
                 if (c.e[i].tally.wins_a + c.e[i].tally.wins_b + c.e[i].tally.draws + c.e[i].tally.timeouts != 288u ||
                     (i > 0 && !(c.e[i - 1].a < c.e[i].a || (c.e[i - 1].a == c.e[i].a && c.e[i - 1].b < c.e[i].b))) ||
-                    duel_cmp_cache_find(&c, c.e[i].a, c.e[i].b) != &c.e[i].tally)
+                    duel_cmp_cache_find(&c, c.e[i].world, c.e[i].a, c.e[i].b) != &c.e[i].tally)
                     __builtin_trap();
             duel_cmp_cache_free(&c);
         } else if (strncmp(err, "c.csv", 5) != 0) {

@@ -9,13 +9,16 @@
 #include "duel_json.h"
 #include "duel_levels.h"
 #include "duel_pairs.h"
+#include "duel_world_cfg.h"
 
 #define DUEL_LADDER_USAGE                                                                                          \
-    "usage: duel_evolve ladder DIR [--top | --levels L1-L2] [--against NAME,...] [--csv FILE] [--json]"
+    "usage: duel_evolve ladder DIR [--top | --levels L1-L2] [--against NAME,...] [--world NAME|FILE] [--csv FILE] " \
+    "[--json]"
 
 /* What to play and where the results go. */
 typedef struct duel_ladder_opts {
-    const char *dir, *csv;
+    const char *dir, *csv, *world_arg;
+    duel_rules world;                /* the run's, or --world's */
     int top, json, subset;
     uint32_t lo, hi;                 /* levels lo..hi (1-based, inclusive); 0, 0: all */
     int against[DUEL_N_BUILTINS];    /* the built-in strategies, in the order given */
@@ -77,7 +80,8 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
             o->top = 1;
         } else if (strcmp(a, "--json") == 0) {
             o->json = 1;
-        } else if (strcmp(a, "--levels") == 0 || strcmp(a, "--against") == 0 || strcmp(a, "--csv") == 0) {
+        } else if (strcmp(a, "--levels") == 0 || strcmp(a, "--against") == 0 || strcmp(a, "--csv") == 0 ||
+                   strcmp(a, "--world") == 0) {
             if (v == NULL) {
                 fprintf(stderr, "duel_evolve: ladder: %s needs a value\n", a);
                 return -1;
@@ -85,6 +89,9 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
             i++;
             if (strcmp(a, "--csv") == 0) {
                 o->csv = v;
+            } else if (strcmp(a, "--world") == 0) {
+                o->world_arg = v;
+                o->subset = 1; /* another world's ladder is not the run's ladder.csv */
             } else if (strcmp(a, "--levels") == 0) {
                 if (duel_ladder_levels(v, &o->lo, &o->hi) != 0) {
                     fprintf(stderr, "duel_evolve: ladder: --levels takes L or L1-L2 (levels from 1), not '%s'\n", v);
@@ -116,6 +123,9 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
         fprintf(stderr, "duel_evolve: ladder: --top and --levels name the levels twice: give one\n");
         return -1;
     }
+    /* the games are the run's own unless --world says otherwise */
+    if (o->world_arg != NULL ? duel_world_arg(&o->world, o->world_arg) : duel_run_world(o->dir, &o->world))
+        return -1;
     return 0;
 }
 
@@ -160,8 +170,11 @@ static void duel_ladder_table(const duel_ladder_opts *o, const duel_level *lv, u
         }
         printf(" %5u:%-5u\n", tw, tl);
     }
-    printf("wins:losses of %u games against each built-in strategy (draws and timeouts are neither)\n",
-           2u * DUEL_CONFIGS);
+    {
+        char w[40];
+        printf("wins:losses of %u games against each built-in strategy (draws and timeouts are neither), world %s\n",
+               2u * DUEL_CONFIGS, duel_world_label(&o->world, w, sizeof w));
+    }
 }
 
 /* docs/tools.md, "ladder --json" */
@@ -169,9 +182,11 @@ static void duel_ladder_json(const duel_ladder_opts *o, const duel_level *lv, ui
                              const duel_pair *pairs)
 {
     uint32_t k, b;
+    char w[40];
     printf("{\"run\":");
     duel_json_str(stdout, o->dir);
-    printf(",\"games\":%u,\"against\":[", 2u * DUEL_CONFIGS);
+    printf(",\"world\":\"%s\",\"world_id\":\"%016llx\",\"games\":%u,\"against\":[",
+           duel_world_label(&o->world, w, sizeof w), (unsigned long long)duel_rules_id(&o->world), 2u * DUEL_CONFIGS);
     for (b = 0; b < o->n_against; b++)
         printf("%s\"%s\"", b ? "," : "", duel_builtin_name(o->against[b]));
     printf("],\"levels\":[");
@@ -231,7 +246,7 @@ int duel_cmd_ladder(int argc, char **argv)
         pairs[k].a = &levels[first + k / o.n_against].ctrl;
         pairs[k].b = &builtins[k % o.n_against];
     }
-    err = duel_pairs_play(pairs, (size_t)(end - first) * o.n_against, 0, NULL, NULL);
+    err = duel_pairs_play(&o.world, pairs, (size_t)(end - first) * o.n_against, 0, NULL, NULL);
     mem = err ? NULL : open_memstream(&text, &len);
     if (mem == NULL) {
         fprintf(stderr, "duel_evolve: ladder: %s\n", err ? "a comparison failed" : "out of memory");

@@ -23,6 +23,7 @@
 #include "duel_lcm_champ.h"
 #include "duel_mpi.h"
 #include "duel_signal.h"
+#include "duel_world_cfg.h"
 #include "neat_coev.h"
 #include "neat_phenotype.h"
 
@@ -325,6 +326,20 @@ static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
 }
 
 
+/* The food of generation g's training games: the rules' training items, or
+ * ([run] train_layouts = comparison) one of the 144 comparison layouts
+ * drawn from the run's seed and the generation (the same for any number of
+ * threads, ranks or resumes). */
+static int32_t duel_train_config(const duel_config *cfg, uint32_t g)
+{
+    uint64_t keys[2];
+    if (cfg->train_layouts != DUEL_TRAIN_COMPARISON)
+        return DUEL_TRAINING;
+    keys[0] = 0x7472616eu; /* "tran": apart from every other use of the seed */
+    keys[1] = g;
+    return (int32_t)(neat_seed_derive(cfg->seed, keys, 2) % DUEL_CONFIGS);
+}
+
 /* Generations until the configured count, a signal or an error. */
 static int duel_loop(duel_run *R)
 {
@@ -349,6 +364,7 @@ static int duel_loop(duel_run *R)
             return 130;
         }
         R->gen_in_flight = neat_coev_generation(R->coev);
+        duel_games_set_training(R->games, duel_train_config(&R->cfg, R->gen_in_flight));
         err = neat_coev_step(R->coev, duel_games_play, R->games, &rep);
         if (err) {
             duel_clear_bar(R);
@@ -500,6 +516,12 @@ static int duel_go(duel_run *R)
         fprintf(stderr, "duel_evolve: out of memory\n");
         return 1;
     }
+    if (duel_games_set_rules(R->games, &R->cfg.world) != 0) {
+        fprintf(stderr, "duel_evolve: the run's [world] rules cannot make a game\n");
+        duel_games_free(R->games);
+        neat_coev_free(R->coev);
+        return 2;
+    }
     duel_mpi_attach(R->games);
     if (ranks > 1)
         duel_log(R, "mpi: %u ranks, %u thread%s on rank 0", ranks, duel_games_threads(R->games),
@@ -519,6 +541,16 @@ static int duel_go(duel_run *R)
     return err;
 }
 
+/* The run's world in its checkpoint (the game tag): its rules' canonical
+ * bytes, so that a resume can tell they are the same (docs/tools.md). */
+static int duel_tag_world(duel_run *R)
+{
+    uint8_t bytes[DUEL_RULES_BYTES];
+    if (duel_rules_encode(&R->cfg.world, bytes) != DUEL_OK)
+        return NEAT_E_ARG;
+    return neat_coev_set_game(R->coev, bytes, sizeof bytes);
+}
+
 /* The two populations from the configuration's start topology. 0, or -1
  * after one line on stderr (2: the configuration's fault, 1: the machine's). */
 static int duel_create(duel_run *R)
@@ -535,6 +567,8 @@ static int duel_create(duel_run *R)
     st.keep_weights = 0;
     e = neat_coev_create(&R->coev, &R->cfg.neat, &R->cfg.coev, &st, R->cfg.seed, NULL);
     neat_genome_free(&g, NULL);
+    if (e == 0)
+        e = duel_tag_world(R);
     if (e) {
         fprintf(stderr, "duel_evolve: cannot start: %s\n", neat_strerror(e));
         return 1;
@@ -797,6 +831,15 @@ static int duel_resume_main(int argc, char **argv)
         fprintf(stderr, "duel_evolve: --set start: a run's start topology cannot change; start a new run instead\n");
         return 2;
     }
+    if (!duel_rules_equal(&R.cfg.world, &before.world)) {
+        fprintf(stderr, "duel_evolve: --set: a run's [world] rules cannot change; start a new run instead\n");
+        return 2;
+    }
+    if (R.cfg.train_layouts != before.train_layouts) {
+        fprintf(stderr, "duel_evolve: --set train_layouts: a run's training food cannot change; start a new run "
+                        "instead\n");
+        return 2;
+    }
     if (duel_config_check(&R.cfg, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;
@@ -826,6 +869,26 @@ static int duel_resume_main(int argc, char **argv)
         if (duel_check_start(&R, path) != 0) {
             neat_coev_free(R.coev);
             return 2;
+        }
+        {
+            duel_rules made;
+            char a[40], b[40];
+            if (duel_ckpt_world(R.coev, path, &made) != 0) {
+                neat_coev_free(R.coev);
+                return 2;
+            }
+            if (!duel_rules_equal(&made, &R.cfg.world)) {
+                fprintf(stderr, "duel_evolve: %s: the run was made in world %s, but config.ini's [world] says %s: a "
+                                "run's rules cannot change (restore config.ini, or start a new run)\n", path,
+                        duel_world_label(&made, a, sizeof a), duel_world_label(&R.cfg.world, b, sizeof b));
+                neat_coev_free(R.coev);
+                return 2;
+            }
+            /* a run from before the rules were data carries them from now on */
+            if (duel_tag_world(&R) != 0) {
+                neat_coev_free(R.coev);
+                return 1;
+            }
         }
         e = neat_coev_set_params(R.coev, &R.cfg.neat, &R.cfg.coev);
         if (e) {

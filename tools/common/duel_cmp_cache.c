@@ -1,4 +1,4 @@
-/* duel_cmp_cache.c - the comparison cache: a CSV of (blob hash, blob hash, tally) under a header naming the world version. */
+/* duel_cmp_cache.c - the comparison cache: a CSV of (world, blob hash, blob hash, tally), the world the rules' identity. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <inttypes.h>
@@ -9,7 +9,10 @@
 #include "duel_cmp_cache.h"
 #include "duel_files.h"
 
-#define DUEL_CMP_HEADER "# duel_evolve compare cache 1, duel world %d: a_hash,b_hash,wins_a,wins_b,draws,timeouts\n"
+#define DUEL_CMP_HEADER "# duel_evolve compare cache 2: world,a_hash,b_hash,wins_a,wins_b,draws,timeouts\n"
+/* format 1 (before the rules were data) named the world version in its
+ * header; its entries are world v1's */
+#define DUEL_CMP_HEADER_1 "# duel_evolve compare cache 1, duel world 1: a_hash,b_hash,wins_a,wins_b,draws,timeouts\n"
 #define DUEL_CMP_MAX_FILE ((size_t)1 << 30)
 
 uint64_t duel_blob_hash(const uint8_t *blob, size_t len)
@@ -23,18 +26,23 @@ uint64_t duel_blob_hash(const uint8_t *blob, size_t len)
     return h;
 }
 
-static int duel_cmp_less(uint64_t a1, uint64_t b1, uint64_t a2, uint64_t b2)
+static int duel_cmp_less(const duel_cmp_entry *e, uint64_t w, uint64_t a, uint64_t b)
 {
-    return a1 < a2 || (a1 == a2 && b1 < b2);
+    return e->world < w || (e->world == w && (e->a < a || (e->a == a && e->b < b)));
 }
 
-/* The first entry not less than (a, b). */
-static size_t duel_cmp_lower(const duel_cmp_cache *c, uint64_t a, uint64_t b)
+static int duel_cmp_is(const duel_cmp_entry *e, uint64_t w, uint64_t a, uint64_t b)
+{
+    return e->world == w && e->a == a && e->b == b;
+}
+
+/* The first entry not less than (w, a, b). */
+static size_t duel_cmp_lower(const duel_cmp_cache *c, uint64_t w, uint64_t a, uint64_t b)
 {
     size_t lo = 0, hi = c->n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        if (duel_cmp_less(c->e[mid].a, c->e[mid].b, a, b))
+        if (duel_cmp_less(&c->e[mid], w, a, b))
             lo = mid + 1;
         else
             hi = mid;
@@ -42,16 +50,16 @@ static size_t duel_cmp_lower(const duel_cmp_cache *c, uint64_t a, uint64_t b)
     return lo;
 }
 
-const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t a, uint64_t b)
+const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t world, uint64_t a, uint64_t b)
 {
-    size_t k = duel_cmp_lower(c, a, b);
-    return k < c->n && c->e[k].a == a && c->e[k].b == b ? &c->e[k].tally : NULL;
+    size_t k = duel_cmp_lower(c, world, a, b);
+    return k < c->n && duel_cmp_is(&c->e[k], world, a, b) ? &c->e[k].tally : NULL;
 }
 
-int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t a, uint64_t b, const duel_tally *t)
+int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t world, uint64_t a, uint64_t b, const duel_tally *t)
 {
-    size_t k = duel_cmp_lower(c, a, b);
-    if (k < c->n && c->e[k].a == a && c->e[k].b == b) {
+    size_t k = duel_cmp_lower(c, world, a, b);
+    if (k < c->n && duel_cmp_is(&c->e[k], world, a, b)) {
         c->e[k].tally = *t;
         c->dirty = 1;
         return 0;
@@ -65,6 +73,7 @@ int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t a, uint64_t b, const duel_tal
         c->cap = cap;
     }
     memmove(c->e + k + 1, c->e + k, (c->n - k) * sizeof *c->e);
+    c->e[k].world = world;
     c->e[k].a = a;
     c->e[k].b = b;
     c->e[k].tally = *t;
@@ -124,51 +133,61 @@ int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t e
 int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, size_t len, char *err,
                          size_t err_len)
 {
-    char header[200];
-    size_t at, line = 1;
+    size_t at, line = 1, hlen;
+    int v1;
 
     memset(c, 0, sizeof *c);
     snprintf(c->path, sizeof c->path, "%s", path);
-    snprintf(header, sizeof header, DUEL_CMP_HEADER, DUEL_SPEC_VERSION);
-    if (len < strlen(header) || memcmp(text, header, strlen(header)) != 0) {
-        /* another version of the world or of this file: its results do not hold; start afresh */
+    v1 = len >= strlen(DUEL_CMP_HEADER_1) && memcmp(text, DUEL_CMP_HEADER_1, strlen(DUEL_CMP_HEADER_1)) == 0;
+    if (!v1 && (len < strlen(DUEL_CMP_HEADER) || memcmp(text, DUEL_CMP_HEADER, strlen(DUEL_CMP_HEADER)) != 0)) {
+        /* another version of this file: its results do not hold; start afresh */
         c->dirty = 1;
         return 0;
     }
-    for (at = strlen(header); at < len; line++) {
-        char row[128];
+    hlen = v1 ? strlen(DUEL_CMP_HEADER_1) : strlen(DUEL_CMP_HEADER);
+    for (at = hlen; at < len; line++) {
+        char row[160];
         const char *p = row;
-        size_t end = at;
-        uint64_t a, b;
+        size_t end = at, key = v1 ? 34 : 51;
+        uint64_t w, a, b;
         duel_tally t;
         while (end < len && text[end] != '\n')
             end++;
         if (end == len) /* a torn last line (the writer died): not an entry */
             break;
-        if (end - at >= sizeof row || end - at < 34)
+        if (end - at >= sizeof row || end - at < key)
             goto bad;
         memcpy(row, text + at, end - at);
         row[end - at] = '\0';
-        if (strlen(row) != end - at || duel_cmp_hex(p, &a) || p[16] != ',' || duel_cmp_hex(p + 17, &b) ||
-            p[33] != ',')
+        if (strlen(row) != end - at)
+            goto bad;
+        if (v1) {
+            w = duel_rules_id(duel_rules_v1());
+        } else {
+            if (duel_cmp_hex(p, &w) || p[16] != ',')
+                goto bad;
+            p += 17;
+        }
+        if (duel_cmp_hex(p, &a) || p[16] != ',' || duel_cmp_hex(p + 17, &b) || p[33] != ',')
             goto bad;
         p += 34;
         if (duel_cmp_u32(&p, ',', &t.wins_a) || duel_cmp_u32(&p, ',', &t.wins_b) || duel_cmp_u32(&p, ',', &t.draws) ||
             duel_cmp_u32(&p, '\0', &t.timeouts) || (uint64_t)t.wins_a + t.wins_b + t.draws + t.timeouts !=
                                                          2u * DUEL_CONFIGS)
             goto bad;
-        if (duel_cmp_cache_add(c, a, b, &t) != 0) {
+        if (duel_cmp_cache_add(c, w, a, b, &t) != 0) {
             snprintf(err, err_len, "%s: out of memory", path);
             duel_cmp_cache_free(c);
             return -1;
         }
         at = end + 1;
     }
-    c->dirty = 0;
+    /* a format-1 file is written back in format 2 when it next saves */
+    c->dirty = v1;
     return 0;
 bad:
-    snprintf(err, err_len, "%s:%zu: not a cache entry (a_hash,b_hash,wins_a,wins_b,draws,timeouts summing to %d): "
-                           "delete the file to rebuild it", path, line + 1, 2 * DUEL_CONFIGS);
+    snprintf(err, err_len, "%s:%zu: not a cache entry (%sa_hash,b_hash,wins_a,wins_b,draws,timeouts summing to %d): "
+                           "delete the file to rebuild it", path, line + 1, v1 ? "" : "world,", 2 * DUEL_CONFIGS);
     duel_cmp_cache_free(c);
     return -1;
 }
@@ -184,9 +203,10 @@ int duel_cmp_cache_save(duel_cmp_cache *c)
     mem = open_memstream(&text, &len);
     if (mem == NULL)
         return -1;
-    fprintf(mem, DUEL_CMP_HEADER, DUEL_SPEC_VERSION);
+    fputs(DUEL_CMP_HEADER, mem);
     for (k = 0; k < c->n; k++)
-        fprintf(mem, "%016" PRIx64 ",%016" PRIx64 ",%u,%u,%u,%u\n", c->e[k].a, c->e[k].b, c->e[k].tally.wins_a,
+        fprintf(mem, "%016" PRIx64 ",%016" PRIx64 ",%016" PRIx64 ",%u,%u,%u,%u\n", c->e[k].world, c->e[k].a, c->e[k].b,
+                c->e[k].tally.wins_a,
                 c->e[k].tally.wins_b, c->e[k].tally.draws, c->e[k].tally.timeouts);
     if (fclose(mem) != 0) {
         free(text);

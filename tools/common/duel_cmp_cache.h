@@ -1,4 +1,4 @@
-/* duel_cmp_cache.h - finished 288-game comparisons kept in a file, keyed by the hashes of the two blobs, so a repeated or extended compare plays nothing twice. */
+/* duel_cmp_cache.h - finished 288-game comparisons kept in a file, keyed by the world's identity and the hashes of the two blobs, so a repeated or extended compare plays nothing twice. */
 #ifndef DUEL_CMP_CACHE_H
 #define DUEL_CMP_CACHE_H
 
@@ -8,13 +8,14 @@
 #include "duel.h"
 
 typedef struct duel_cmp_entry {
-    uint64_t a, b; /* duel_blob_hash of the two blobs, a played first-named */
+    uint64_t world; /* duel_rules_id of the world the games were played in */
+    uint64_t a, b;  /* duel_blob_hash of the two blobs, a played first-named */
     duel_tally tally;
 } duel_cmp_entry;
 
 typedef struct duel_cmp_cache {
     char path[4200];
-    duel_cmp_entry *e; /* sorted by (a, b) */
+    duel_cmp_entry *e; /* sorted by (world, a, b) */
     size_t n, cap;
     int dirty;
 } duel_cmp_cache;
@@ -22,16 +23,18 @@ typedef struct duel_cmp_cache {
 /* 64-bit FNV-1a of the blob's bytes: the key of its comparisons. */
 uint64_t duel_blob_hash(const uint8_t *blob, size_t len);
 
-/* Reads path (missing: an empty cache). A file written for another world
- * version is ignored (and replaced on save). A damaged line: -1 with
+/* Reads path (missing: an empty cache). A file in format 1 (before the
+ * rules were data) is world v1's and is written back in format 2; another
+ * header is ignored (and replaced on save). A damaged line: -1 with
  * "PATH:LINE: problem" in err. */
 int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t err_len);
 /* The same from len bytes of text (path names it and is where it saves). */
 int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, size_t len, char *err,
                          size_t err_len);
-const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t a, uint64_t b);
+/* The comparison of a against b in world (duel_rules_id), or NULL. */
+const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t world, uint64_t a, uint64_t b);
 /* 0, or -1 when out of memory. */
-int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t a, uint64_t b, const duel_tally *t);
+int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t world, uint64_t a, uint64_t b, const duel_tally *t);
 /* Writes the file (temporary, then rename) when something was added. 0 or
  * -1 (errno set). */
 int duel_cmp_cache_save(duel_cmp_cache *c);

@@ -2,10 +2,12 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "duel_ctrl.h"
 #include "neat_coev.h"
 #include "duel_files.h"
+#include "duel_world_cfg.h"
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
 
@@ -130,4 +132,45 @@ int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
     }
     free(buf);
     return err ? -1 : 0;
+}
+
+int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r)
+{
+    size_t len = 0, off = 0;
+    const uint8_t *tag = neat_coev_game(c, &len);
+    if (len == 0) {
+        *r = *duel_rules_v1();
+        return 0;
+    }
+    if (duel_rules_decode(r, tag, len, &off) != DUEL_OK) {
+        fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged at byte %zu of %zu\n", path,
+                off, len);
+        return -1;
+    }
+    return 0;
+}
+
+int duel_run_world(const char *dir, duel_rules *r)
+{
+    char path[4200];
+    struct neat_coev *c;
+    int e;
+    if ((size_t)snprintf(path, sizeof path, "%s/checkpoint.bin", dir) >= sizeof path) {
+        fprintf(stderr, "duel_evolve: %s: the path is too long\n", dir);
+        return -1;
+    }
+    e = duel_ckpt_load("", path, &c);
+    if (e < 0)
+        return -1;
+    if (e == 0) {
+        e = duel_ckpt_world(c, path, r);
+        neat_coev_free(c);
+        return e;
+    }
+    snprintf(path, sizeof path, "%s/config.ini", dir);
+    if (access(path, F_OK) != 0) {
+        *r = *duel_rules_v1();
+        return 0;
+    }
+    return duel_world_of_run(r, dir);
 }

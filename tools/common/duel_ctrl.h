@@ -40,4 +40,14 @@ struct neat_coev;
 int duel_ckpt_load(const char *prefix, const char *path, struct neat_coev **out);
 void duel_cli_ctrl_close(duel_cli_ctrl *c);
 
+/* The world a coevolution checkpoint (read from path) was made in: its game
+ * tag, or world v1 when it has none (a run from before the rules were data,
+ * checkpoint version 2). 0, or -1 after one line on stderr. */
+int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r);
+
+/* The world of the run in dir: its checkpoint's (duel_ckpt_world), else,
+ * before its first checkpoint, its config.ini's [world], else v1. 0, or -1
+ * after one line on stderr (a damaged checkpoint or config.ini). */
+int duel_run_world(const char *dir, duel_rules *r);
+
 #endif /* DUEL_CTRL_H */

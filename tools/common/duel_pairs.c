@@ -9,6 +9,7 @@
 #include "duel_pairs.h"
 
 typedef struct duel_pairs_job {
+    const duel_rules *rules;
     duel_pair *pairs;
     size_t n, next, done;
     pthread_mutex_t lock;
@@ -50,7 +51,7 @@ static void *duel_pairs_worker(void *arg)
             return NULL;
         err = duel_pairs_own(job->pairs[k].a, &a, &na, &ma) != 0 || duel_pairs_own(job->pairs[k].b, &b, &nb, &mb) != 0;
         if (!err)
-            err = duel_compare(&a, &b, &job->pairs[k].tally) != 0;
+            err = duel_compare_rules(job->rules, &a, &b, &job->pairs[k].tally) != 0;
         free(ma);
         free(mb);
         pthread_mutex_lock(&job->lock);
@@ -62,7 +63,8 @@ static void *duel_pairs_worker(void *arg)
     }
 }
 
-int duel_pairs_play(duel_pair *pairs, size_t n, uint32_t threads, duel_pairs_progress fn, void *ud)
+int duel_pairs_play(const duel_rules *rules, duel_pair *pairs, size_t n, uint32_t threads, duel_pairs_progress fn,
+                    void *ud)
 {
     duel_pairs_job job;
     pthread_t th[256];
@@ -75,6 +77,7 @@ int duel_pairs_play(duel_pair *pairs, size_t n, uint32_t threads, duel_pairs_pro
     if ((size_t)threads > n)
         threads = n > 0 ? (uint32_t)n : 1u;
     memset(&job, 0, sizeof job);
+    job.rules = rules;
     job.pairs = pairs;
     job.n = n;
     pthread_mutex_init(&job.lock, NULL);

@@ -19,9 +19,11 @@ typedef struct duel_pair {
  * end (done == n), with the comparisons finished so far. */
 typedef void (*duel_pairs_progress)(void *ud, size_t done, size_t n);
 
-/* Plays every pair, each on a thread's own copy of its networks (threads 0:
- * every core), so the tallies do not depend on the number of threads.
- * 0, or -1 (out of memory, or a blob that no longer loads). */
-int duel_pairs_play(duel_pair *pairs, size_t n, uint32_t threads, duel_pairs_progress fn, void *ud);
+/* Plays every pair in the world of rules (NULL: v1), each on a thread's own
+ * copy of its networks (threads 0: every core), so the tallies do not
+ * depend on the number of threads. 0, or -1 (out of memory, or a blob that
+ * no longer loads). */
+int duel_pairs_play(const duel_rules *rules, duel_pair *pairs, size_t n, uint32_t threads, duel_pairs_progress fn,
+                    void *ud);
 
 #endif /* DUEL_PAIRS_H */

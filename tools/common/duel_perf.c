@@ -14,6 +14,7 @@
 #include "duel_generations.h"
 #include "duel_pairs.h"
 #include "duel_perf.h"
+#include "duel_world_cfg.h"
 #include "neat_coev.h"
 
 /* DIR is a run that has played every generation of its config.ini, and its
@@ -68,10 +69,14 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
             return -1;
         gen = neat_coev_generation(c);
         doms = neat_coev_dominant_count(c);
+        e = duel_ckpt_world(c, path, &r->world);
         neat_coev_free(c);
+        if (e != 0)
+            return -1;
     } else {
         gen = duel_perf_csv_generations(dir);
         doms = UINT32_MAX;
+        r->world = cfg.world;
     }
     if (gen < cfg.generations) {
         fprintf(stderr, "duel_evolve: %s%s: not a finished run (%u of %u generations): resume it first\n", pre, dir,
@@ -201,6 +206,17 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
         m->rank[m->n_rank++] = j;
     }
 
+    /* one world: a comparison means something only between strategies of the same game */
+    for (i = 1; i < m->n_runs; i++)
+        if (!duel_rules_equal(&m->runs[i].world, &m->runs[0].world)) {
+            char a[40], b[40];
+            fprintf(stderr, "duel_evolve: %s%s was made in world %s, %s in world %s: runs of different worlds are "
+                            "not compared\n", pre, m->runs[0].dir, duel_world_label(&m->runs[0].world, a, sizeof a),
+                    m->runs[i].dir, duel_world_label(&m->runs[i].world, b, sizeof b));
+            goto out;
+        }
+    m->world = m->runs[0].world;
+
     /* the pairs: every candidate against every ranking but its own */
     m->pairs = (duel_perf_pair *)calloc((size_t)m->n_cand * m->n_rank, sizeof *m->pairs);
     m->perf_hi = (double *)calloc(m->n_cand, sizeof(double));
@@ -244,6 +260,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     duel_pair *jobs = NULL;
     uint32_t *slot = NULL;
     uint32_t i, k, l, n_jobs = 0;
+    uint64_t world = 0;
     size_t total = 0, at = 0;
     const char *pre = o->prefix ? o->prefix : "";
     char err[4400];
@@ -254,6 +271,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     rc = duel_perf_open_all(m, cand, n_cand, against, n_against, pre, !o->no_checkpoint);
     if (rc != 0)
         goto out;
+    world = duel_rules_id(&m->world);
     rc = 2;
 
     /* the caches: one per candidate run (RUN/compare-cache.csv), or one for all */
@@ -285,7 +303,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
         duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
         duel_cmp_cache *cc = o->cache_path ? &shared : &caches[p->cand];
         for (l = 0; l < r->n_levels; l++, at++) {
-            const duel_tally *t = duel_cmp_cache_find(cc, c->top_hash, r->hash[l]);
+            const duel_tally *t = duel_cmp_cache_find(cc, world, c->top_hash, r->hash[l]);
             if (t != NULL) {
                 p->t[l] = *t;
                 slot[at] = UINT32_MAX;
@@ -302,7 +320,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
                         "have to be played\n", pre, n_jobs, jobs[0].a->name, jobs[0].b->name);
         goto out;
     }
-    if (n_jobs > 0 && duel_pairs_play(jobs, n_jobs, o->threads, o->progress ? duel_perf_progress : NULL,
+    if (n_jobs > 0 && duel_pairs_play(&m->world, jobs, n_jobs, o->threads, o->progress ? duel_perf_progress : NULL,
                                       (void *)pre) != 0) {
         fprintf(stderr, "duel_evolve: %sa comparison failed (out of memory)\n", pre);
         rc = 1;
@@ -318,7 +336,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
             if (slot[at] == UINT32_MAX)
                 continue;
             p->t[l] = jobs[slot[at]].tally;
-            if (duel_cmp_cache_add(cc, c->top_hash, r->hash[l], &p->t[l]) != 0)
+            if (duel_cmp_cache_add(cc, world, c->top_hash, r->hash[l], &p->t[l]) != 0)
                 DUEL_PERF_OOM(m);
         }
         duel_perf_readings(p, r->n_levels);

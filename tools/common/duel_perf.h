@@ -17,6 +17,7 @@
 /* A finished run: its dominance ranking with every dominant's blob. */
 typedef struct duel_perf_run {
     const char *dir;        /* as given */
+    duel_rules world;       /* the rules it was made in (its checkpoint's, else its config.ini's) */
     char real[PATH_MAX];    /* realpath: a run is never ranked against itself */
     duel_level *levels;
     uint32_t n_levels;
@@ -42,6 +43,7 @@ typedef struct duel_perf {
     /* per candidate, means over its rankings */
     double *perf_hi, *perf_co, *gen_hi, *gen_co;
     size_t played, cached;  /* comparisons played now, and found in the caches */
+    duel_rules world;       /* every run's: runs of different worlds are not compared */
 } duel_perf;
 
 /* What duel_perf_measure does with a comparison no cache holds. */
@@ -61,10 +63,10 @@ typedef struct duel_perf_opts {
 } duel_perf_opts;
 
 /* Opens every candidate and every ranking (each a finished run), pairs every
- * candidate with every ranking but its own, and fills m. 0; 2 after one line
- * on stderr (bad input: not a finished run, a run named twice, an empty
- * ranking, a damaged cache, or in DUEL_PERF_CACHE_ONLY a comparison that
- * is not cached); 1 after one line (out of memory, a comparison failed).
+ * candidate with every ranking but its own, and fills m, playing in the
+ * runs' world. 0; 2 after one line on stderr (bad input: not a finished
+ * run, a run named twice, runs of different worlds, an empty ranking, a
+ * damaged cache, or in DUEL_PERF_CACHE_ONLY a comparison that is not cached); 1 after one line (out of memory, a comparison failed).
  * duel_perf_free(m) in every case. */
 int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
                       uint32_t n_against, const duel_perf_opts *o);
