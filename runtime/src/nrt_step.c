@@ -35,13 +35,6 @@ const nrt_q15 *nrt_outputs(const nrt_net *net)
     return net->act[net->cur] + net->n_inputs;
 }
 
-/* The propagate step: in place on the current activations, the nodes in
- * the loader's evaluation order, so a node evaluated earlier in this step
- * gives its new value and any other (itself, a later one) its previous one,
- * exactly the definition (docs/runtime.md). Kept apart from the sync loop so
- * that loop is what it was; smaller rather than faster (pairs, not fours;
- * the sigmoid called, not inlined), to keep the runtime within 2 KiB of
- * Cortex-M0+ code. */
 #ifndef NRT_NO_PROPAGATE
 /* The propagate step: in place on the current activations, the nodes in
  * the loader's evaluation order, so a source evaluated earlier in this step
@@ -49,7 +42,8 @@ const nrt_q15 *nrt_outputs(const nrt_net *net)
  * one) its previous one: the definition of docs/runtime.md, word for word.
  * Kept apart from the sync loop so that one stays what it was, and small
  * rather than fast (one connection a round, the sigmoid called, not
- * inlined): Cortex-M0+ flash is the scarce thing (docs/runtime.md, "Size"). */
+ * inlined): Cortex-M0+ flash is the scarce thing (docs/runtime.md, "Size
+ * on Cortex-M0+"). */
 #if defined(__GNUC__) || defined(__clang__)
 /* apart, not inlined: inlined, it changed the sync step's registers and
  * stack frame, and cost it 70 instructions on Cortex-M0+ */
