@@ -49,6 +49,12 @@ def firmware(build):
         elif name == "(TOTALS)":
             f["rt_m0_total" if seen_total == 0 else "duelsim_m0_total"] = grouped(n)
             seen_total += 1
+    # the runtime built sync-only (NRT_NO_PROPAGATE), where the 2 KiB target applies
+    for name, size in re.findall(r"^sync-only (nrt_load|nrt_step|nrt_sigmoid)\.c: (\d+) bytes$", text, re.M):
+        f["rt_m0_sync_" + name[4:]] = grouped(int(size))
+    m = re.search(r"^runtime code \(text \+ data\): \d+ bytes with both step modes, (\d+) sync-only", text, re.M)
+    if m:
+        f["rt_m0_sync_total"] = grouped(int(m.group(1)))
     images = re.findall(r"^\s*(\d+)\s+(\d+)\s+(\d+)\s+\d+\s+[0-9a-f]+\s+(duels|figures)\.elf$", text, re.M)
     for t, d, b, name in images:
         f[f"fw_m0_{name}_text"] = grouped(int(t) + int(d))
@@ -61,11 +67,22 @@ def firmware(build):
             continue
         champs = re.findall(r"^champion ([AB]): (\d+) connections.*?blob (\d+) bytes \+ state (\d+) bytes.*?"
                             r"nrt_step ([0-9.]+) instructions \(([0-9.]+) per connection\)", block, re.M)
+        conns_of = {}
         for who, conns, blob, state, step, per in champs:
+            conns_of[who] = conns
             f[f"{core}_step{conns}"] = grouped(float(step))
             f[f"{core}_per{conns}"] = per
             f[f"blob{conns}"] = grouped(int(blob))
             f[f"state{conns}"] = grouped(int(state))
+        # the same networks stepped in propagate mode
+        for who, state, step, per in re.findall(r"^champion ([AB]), propagate: state (\d+) bytes; nrt_step ([0-9.]+) "
+                                                r"instructions \(([0-9.]+) per connection\)", block, re.M):
+            conns = conns_of.get(who)
+            if conns is None:
+                continue
+            f[f"{core}_pstep{conns}"] = grouped(float(step))
+            f[f"{core}_pper{conns}"] = per
+            f[f"pstate{conns}"] = grouped(int(state))
         m = re.search(r"([0-9.]+) instructions per game step", block)
         if m:
             f[f"{core}_game"] = grouped(float(m.group(1)))

@@ -10,10 +10,11 @@ c=$root/tests/fuzz/corpus
 duel=$build/bin/duel_evolve
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# inputs that once crashed a harness (regress-*) are kept
+# inputs that once crashed a harness (regress-*) are kept, and checkpoints of version 2 (v2-*), which still load
+# but which nothing writes any more
 for d in blob pop genome coev ini lcm_log lcm_msg rundir; do
   mkdir -p "$c/$d"
-  find "$c/$d" -type f ! -name 'regress-*' -delete
+  find "$c/$d" -type f ! -name 'regress-*' ! -name 'v2-*' -delete
 done
 
 "$fuzz/tests/make_corpus" "$c/blob" "$c/pop" > /dev/null

@@ -84,9 +84,36 @@ static uint32_t fw_time_steps(nrt_net *net)
     return with - without;
 }
 
+/* The champion's network as a propagate blob (docs/formats.md: version 2,
+ * the step byte set, the CRC again) in buf, loaded into mem; the same
+ * connections, so the two modes' figures compare. 0 or an nrt_error. */
+static int fw_load_propagate(nrt_net *net, const uint8_t *blob, size_t len, uint8_t *buf, size_t cap, uint8_t *mem,
+                             size_t mem_len, size_t *need)
+{
+    uint32_t crc;
+    size_t k;
+    int err;
+    if (len > cap || len < NRT_HEADER_SIZE)
+        return NRT_E_NOMEM;
+    for (k = 0; k < len; k++)
+        buf[k] = blob[k];
+    buf[NRT_OFF_VERSION] = NRT_FORMAT_VERSION_PROPAGATE;
+    buf[NRT_OFF_STEP] = NRT_STEP_PROPAGATE;
+    crc = nrt_crc32(0, buf, NRT_OFF_CRC);
+    crc = nrt_crc32(crc, buf + NRT_HEADER_SIZE, len - NRT_HEADER_SIZE);
+    buf[NRT_OFF_CRC] = (uint8_t)crc;
+    buf[NRT_OFF_CRC + 1] = (uint8_t)(crc >> 8);
+    buf[NRT_OFF_CRC + 2] = (uint8_t)(crc >> 16);
+    buf[NRT_OFF_CRC + 3] = (uint8_t)(crc >> 24);
+    err = nrt_mem_required(buf, len, need);
+    return err ? err : nrt_load(net, buf, len, mem, mem_len);
+}
+
 int main(void)
 {
     static uint8_t arena[FW_ARENA];
+    static uint8_t pblob[1024]; /* a propagate copy of a champion's blob (B: 840 bytes) */
+    nrt_net pnet;
     const uint8_t *blob[2] = {fw_champion_a, fw_champion_b};
     const size_t len[2] = {fw_champion_a_len, fw_champion_b_len};
     nrt_net net[2];
@@ -162,6 +189,23 @@ int main(void)
         fw_line_end(&l, fw_write, NULL);
         ctrl[i].net = &net[i];
         ctrl[i].builtin = 0;
+        /* the same network stepped in propagate mode (docs/runtime.md) */
+        err = fw_load_propagate(&pnet, blob[i], len[i], pblob, sizeof pblob, arena + used, sizeof arena - used, &need);
+        if (err) {
+            fw_line_str(&l, "propagate copy refused: ");
+            fw_line_str(&l, fw_nrt_error_name(err));
+            fw_line_end(&l, fw_write, NULL);
+            return FW_EXIT_REFUSED;
+        }
+        units = fw_time_steps(&pnet);
+        fw_line_str(&l, i == 0 ? "champion A, propagate: state " : "champion B, propagate: state ");
+        fw_line_udec(&l, (uint32_t)need);
+        fw_line_str(&l, " bytes; nrt_step ");
+        fw_line_tenths(&l, fw_tenths(units, cal, FW_STEPS));
+        fw_line_str(&l, " instructions (");
+        fw_line_tenths(&l, fw_tenths(units, cal, FW_STEPS * pnet.n_conns));
+        fw_line_str(&l, " per connection)");
+        fw_line_end(&l, fw_write, NULL);
     }
 
     /* a whole game, B against A, with the stack painted below this frame to

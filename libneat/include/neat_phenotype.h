@@ -31,10 +31,14 @@
  *   (step 2^-12) and saturate to [-8 + 2^-12, 8 - 2^-12]; neat_params_check
  *   refuses weight_max above 8 for that reason. The network is the
  *   genome's enabled connections only.
- * - Time: nrt_step is one synchronous step (every node reads the previous
- *   step's activations), so a signal needs one step per layer to reach an
- *   output. A feed-forward task calls nrt_settle (steps until nothing
- *   changes); a recurrent or control task calls nrt_step once per time step.
+ * - Time: with p->net_step NEAT_STEP_SYNC (the default) nrt_step is one
+ *   synchronous step (every node reads the previous step's activations), so
+ *   a signal needs one step per layer to reach an output; with
+ *   NEAT_STEP_PROPAGATE the nodes are evaluated in order within the step,
+ *   so it reaches the outputs at once and only cycles read the previous
+ *   step (docs/runtime.md). The blob records the mode. A feed-forward task
+ *   calls nrt_settle (steps until nothing changes); a recurrent or control
+ *   task calls nrt_step once per time step.
  *   nrt_reset zeroes all activations: call it between trials, or the last
  *   trial's state leaks into the next. It zeroes the input slots too, so
  *   write the inputs through nrt_inputs after it, not before.
@@ -67,7 +71,7 @@ NEAT_API void neat_phenotype_init(neat_phenotype *ph, const neat_alloc *a);
 /* Releases the buffers; ph may be initialised again. */
 NEAT_API void neat_phenotype_free(neat_phenotype *ph);
 /* Encodes g as a blob for a task of p->n_inputs inputs and p->n_outputs
- * outputs and loads it into ph->net (reset). Returns 0, a negative
+ * outputs, stepping in p->net_step, and loads it into ph->net (reset). Returns 0, a negative
  * neat_error from the encoder (NEAT_E_TOOBIG, NEAT_E_NOMEM), or a negative
  * nrt_error - 100. */
 NEAT_API int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_params *p);

@@ -35,13 +35,6 @@ const nrt_q15 *nrt_outputs(const nrt_net *net)
     return net->act[net->cur] + net->n_inputs;
 }
 
-/* The propagate step: in place on the current activations, the nodes in
- * the loader's evaluation order, so a node evaluated earlier in this step
- * gives its new value and any other (itself, a later one) its previous one,
- * exactly the definition (docs/runtime.md). Kept apart from the sync loop so
- * that loop is what it was; smaller rather than faster (pairs, not fours;
- * the sigmoid called, not inlined), to keep the runtime within 2 KiB of
- * Cortex-M0+ code. */
 #ifndef NRT_NO_PROPAGATE
 /* The propagate step: in place on the current activations, the nodes in
  * the loader's evaluation order, so a source evaluated earlier in this step
@@ -49,7 +42,13 @@ const nrt_q15 *nrt_outputs(const nrt_net *net)
  * one) its previous one: the definition of docs/runtime.md, word for word.
  * Kept apart from the sync loop so that one stays what it was, and small
  * rather than fast (one connection a round, the sigmoid called, not
- * inlined): Cortex-M0+ flash is the scarce thing (docs/runtime.md, "Size"). */
+ * inlined): Cortex-M0+ flash is the scarce thing (docs/runtime.md, "Size
+ * on Cortex-M0+"). */
+#if defined(__GNUC__) || defined(__clang__)
+/* apart, not inlined: inlined, it changed the sync step's registers and
+ * stack frame, and cost it 70 instructions on Cortex-M0+ */
+__attribute__((noinline))
+#endif
 static void nrt_step_propagate(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
 {
     nrt_q15 *a = net->act[net->cur];
@@ -72,7 +71,11 @@ static void nrt_step_propagate(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *out
 }
 #endif
 
-void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
+/* The sync step: one synchronous propagation. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline)) /* its own frame, the one it had before the modes */
+#endif
+static void nrt_step_sync(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
 {
     nrt_q15 *prev = net->act[net->cur];
     nrt_q15 *next = net->act[net->cur ^ 1u] + net->n_inputs;
@@ -81,12 +84,6 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
     uint32_t j, non_in = (uint32_t)net->n_nodes - net->n_inputs;
     size_t k = 0; /* size_t: k + 1 can fold into an address */
 
-#ifndef NRT_NO_PROPAGATE
-    if (net->order != NULL) {
-        nrt_step_propagate(net, inputs, outputs);
-        return;
-    }
-#endif
     /* The inputs are part of the state this step reads (already there when
      * the caller wrote them through nrt_inputs). */
     if (inputs != prev)
@@ -119,6 +116,17 @@ void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
     net->cur ^= 1u;
     if (outputs != NULL)
         memcpy(outputs, next, 2u * net->n_outputs);
+}
+
+void nrt_step(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs)
+{
+#ifndef NRT_NO_PROPAGATE
+    if (net->order != NULL) {
+        nrt_step_propagate(net, inputs, outputs);
+        return;
+    }
+#endif
+    nrt_step_sync(net, inputs, outputs);
 }
 
 int nrt_settle(nrt_net *net, const nrt_q15 *inputs, nrt_q15 *outputs, int max_steps)

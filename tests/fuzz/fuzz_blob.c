@@ -1,4 +1,4 @@
-/* fuzz_blob.c - libFuzzer harness: any bytes through nrt_inspect, nrt_load, nrt_step and nrt_settle, and neat_genome_from_blob, must never crash; a blob's genome writes back the same blob (in the writer's order: each node's connections by source). */
+/* fuzz_blob.c - libFuzzer harness: any bytes through nrt_inspect, nrt_load, nrt_step and nrt_settle (sync and propagate blobs), and neat_genome_from_blob, must never crash; a propagate network's order is a permutation of its non-input nodes; a blob's genome writes back the same blob in the same step mode (in the writer's order: each node's connections by source). */
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -26,7 +26,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     {
         /* a start topology from a blob: refused exactly when the runtime refuses it */
         neat_genome g;
-        int ge = neat_genome_from_blob(&g, data, size, NULL);
+        int step = -1;
+        int ge = neat_genome_from_blob_step(&g, data, size, NULL, &step);
         if ((ge == NEAT_OK) != (err == NRT_OK) || (ge != NEAT_OK && ge != NEAT_E_FORMAT))
             __builtin_trap();
         if (ge == NEAT_OK) {
@@ -40,14 +41,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     canonical &= net.src[k] >= net.src[k - 1];
             /* the same network written again, when the genome has the duel-like layout: the same blob when it
              * was in the writer's order, else a blob that reads back and writes again to itself */
-            if (neat_blob_write(&g, (uint32_t)net.n_inputs - 1u, net.n_outputs, back, sizeof back, &blen) == NEAT_OK) {
+            if (step != (net.step == NRT_STEP_PROPAGATE ? NEAT_STEP_PROPAGATE : NEAT_STEP_SYNC))
+                __builtin_trap();
+            if (neat_blob_write_step(&g, (uint32_t)net.n_inputs - 1u, net.n_outputs, step, back, sizeof back, &blen) ==
+                NEAT_OK) {
                 neat_genome g2;
                 if (canonical && (blen != size || memcmp(back, data, size) != 0))
                     __builtin_trap();
                 if (neat_genome_from_blob(&g2, back, blen, NULL) != NEAT_OK)
                     __builtin_trap();
-                if (neat_blob_write(&g2, (uint32_t)net.n_inputs - 1u, net.n_outputs, again, sizeof again, &alen) !=
-                        NEAT_OK || alen != blen || memcmp(again, back, blen) != 0)
+                if (neat_blob_write_step(&g2, (uint32_t)net.n_inputs - 1u, net.n_outputs, step, again, sizeof again,
+                                         &alen) != NEAT_OK || alen != blen || memcmp(again, back, blen) != 0)
                     __builtin_trap();
                 neat_genome_free(&g2, NULL);
             }
@@ -61,6 +65,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     if (blob_size != size || net.n_inputs > NRT_MAX_NODES || net.n_outputs > NRT_MAX_NODES)
         __builtin_trap();
+    if ((net.order != NULL) != (net.step == NRT_STEP_PROPAGATE))
+        __builtin_trap();
+    if (net.order != NULL) { /* every non-input node exactly once, inside the memory nrt_inspect asked for */
+        static uint8_t seen[NRT_MAX_NODES];
+        memset(seen, 0, sizeof seen);
+        if (net.order < fuzz_mem + off || net.order + (net.n_nodes - net.n_inputs) > fuzz_mem + off + need)
+            __builtin_trap();
+        for (i = 0; i < (uint32_t)net.n_nodes - net.n_inputs; i++)
+            if (net.order[i] < net.n_inputs || net.order[i] >= net.n_nodes || seen[net.order[i]]++)
+                __builtin_trap();
+    }
 
     for (i = 0; i < net.n_inputs; i++)
         inputs[i] = (nrt_q15)(i == 0 ? NRT_ONE : (int32_t)(i * 7919u % 65536u) - 32768);

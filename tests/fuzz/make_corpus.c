@@ -62,10 +62,19 @@ static int mc_nodes(neat_genome *g, uint32_t n_in, uint32_t n_out, uint32_t n_hi
     return err;
 }
 
-/* Encodes g and writes it; also leaves the blob in mc_buf and its length in *len. */
+/* Encodes g and writes it, and as a propagate blob (NAME-propagate.blob, format version 2);
+ * leaves the sync blob in mc_buf and its length in *len. */
 static int mc_blob(const char *dir, const char *name, neat_genome *g, uint32_t n_in, uint32_t n_out, size_t *len)
 {
-    int err = neat_blob_write(g, n_in, n_out, mc_buf, sizeof mc_buf, len);
+    char pname[96];
+    size_t plen = 0;
+    int err = neat_blob_write_step(g, n_in, n_out, NEAT_STEP_PROPAGATE, mc_buf, sizeof mc_buf, &plen);
+    if (!err) {
+        snprintf(pname, sizeof pname, "%.*s-propagate.blob", (int)(strlen(name) - 5), name);
+        err = mc_write(dir, pname, mc_buf, plen) ? NEAT_E_ARG : NEAT_OK;
+    }
+    if (!err)
+        err = neat_blob_write(g, n_in, n_out, mc_buf, sizeof mc_buf, len);
     neat_genome_free(g, NULL);
     if (err) {
         fprintf(stderr, "%s: %s\n", name, neat_strerror(err));
@@ -85,7 +94,8 @@ static void mc_fix_crc(uint8_t *b, size_t len)
 }
 
 /* Population checkpoints: 2 inputs, 1 output, 12 genomes, at generation 0
- * and after a few epochs (grown networks, several species), in each mode. */
+ * and after a few epochs (grown networks, several species), in each mode;
+ * the simplify ones with net_step propagate and a game tag (version 3). */
 static int mc_pops(const char *dir)
 {
     static const int modes[] = {NEAT_MODE_COMPLEXIFY, NEAT_MODE_FIXED, NEAT_MODE_SIMPLIFY};
@@ -103,7 +113,10 @@ static int mc_pops(const char *dir)
         p.mode = modes[m];
         p.add_node_prob = 0.2;
         p.add_conn_prob = 0.3;
+        p.net_step = m == 2 ? NEAT_STEP_PROPAGATE : NEAT_STEP_SYNC;
         err = neat_pop_create(&pop, &p, NULL, 5u + (uint32_t)m, NULL);
+        if (!err && m == 2)
+            err = neat_pop_set_game(pop, (const uint8_t *)"duel world rules v1\0\1\2", 22);
         for (e = 0; e < 6 && !err; e++) {
             if (e == 0 || e == 5) {
                 err = neat_pop_save(pop, &buf, &len);
