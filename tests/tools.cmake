@@ -86,6 +86,19 @@ foreach(check threads kill interrupt overrides config ladder)
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/duel_run.sh $<TARGET_FILE:duel_evolve> ${check} ${NEAT_RUN_CFG})
 endforeach()
 
+# the world's rules as data: config.ini and checkpoint, bad rules, resume, the cache per world, the independent model
+foreach(check config resume bad cache replay)
+  add_test(NAME tools/world_${check}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/world.sh $<TARGET_FILE:duel_evolve> ${check}
+                   ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini)
+endforeach()
+
+# evolution against fixed opponents: threads, kill -9 and resume, bad input, the strength series
+foreach(check threads kill bad strength)
+  add_test(NAME tools/fixed_${check}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/fixed.sh $<TARGET_FILE:duel_evolve> ${check})
+endforeach()
+
 # a run of configs/quick.ini with a fixed seed, byte for byte as recorded before the simulator's speed-ups
 add_test(NAME tools/golden_quick
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/golden_run.sh $<TARGET_FILE:duel_evolve> ${PROJECT_SOURCE_DIR}/configs/quick.ini

@@ -9,13 +9,14 @@
 #include "duel_json.h"
 #include "duel_lcm.h"
 #include "duel_trace.h"
+#include "duel_world_cfg.h"
 
 static void duel_play_usage(void)
 {
     fprintf(stderr, "usage: duel_evolve play A B [--games 288 | --food K|training --side west|east] [--trace FILE.csv] "
-                    "[--lcm-log FILE.lcm] [--json]\n"
+                    "[--lcm-log FILE.lcm] [--world NAME|FILE] [--json]\n"
                     "  A, B: a champion blob or genome file, or builtin:NAME (idle, spinner, forager, hunter, "
-                    "forager-hunter)\n");
+                    "forager-hunter); the world: --world's, else the runs' the champions come from, else v1\n");
 }
 
 /* The outcome as a JSON word (docs/tools.md, "play --json"). */
@@ -61,8 +62,9 @@ static void duel_play_json_tally(const char *a, const char *b, const duel_tally 
 int duel_cmd_play(int argc, char **argv)
 {
     duel_cli_ctrl a, b;
-    const char *trace_path = NULL, *lcm_path = NULL;
-    int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err, json = 0;
+    const char *trace_path = NULL, *lcm_path = NULL, *world_arg = NULL;
+    duel_rules world = *duel_rules_v1();
+    int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err, json = 0, found = 0;
 
     if (argc < 2) {
         duel_play_usage();
@@ -75,7 +77,7 @@ int duel_cmd_play(int argc, char **argv)
             continue;
         }
         if (i + 1 >= argc) {
-            static const char *const takes[] = {"--games", "--food", "--side", "--trace", "--lcm-log", NULL};
+            static const char *const takes[] = {"--games", "--food", "--side", "--trace", "--lcm-log", "--world", NULL};
             return duel_cli_missing_value("play", opt, takes);
         }
         if (strcmp(opt, "--games") == 0) {
@@ -110,6 +112,8 @@ int duel_cmd_play(int argc, char **argv)
             trace_path = argv[++i];
         } else if (strcmp(opt, "--lcm-log") == 0) {
             lcm_path = argv[++i];
+        } else if (strcmp(opt, "--world") == 0) {
+            world_arg = argv[++i];
         } else {
             fprintf(stderr, "duel_evolve: play: unknown option '%s' (see duel_evolve --help)\n", opt);
             return 2;
@@ -120,6 +124,14 @@ int duel_cmd_play(int argc, char **argv)
                 trace_path != NULL ? "--trace" : "--lcm-log");
         return 2;
     }
+    if (world_arg != NULL ? duel_world_arg(&world, world_arg) != 0
+                          : duel_ctrl_world((const char *const *)argv, 2, &world, &found) != 0)
+        return 2;
+    if (lcm_path != NULL && !duel_rules_equal(&world, duel_rules_v1())) {
+        fprintf(stderr, "duel_evolve: play: --lcm-log records world v1's games only (its messages do not name the "
+                        "world yet)\n");
+        return 2;
+    }
     if (duel_cli_ctrl_open(&a, argv[0]) != 0)
         return 2;
     if (duel_cli_ctrl_open(&b, argv[1]) != 0) {
@@ -128,7 +140,7 @@ int duel_cmd_play(int argc, char **argv)
     }
     if (games == 288) {
         duel_tally t;
-        err = duel_compare(&a.ctrl, &b.ctrl, &t);
+        err = duel_compare_rules(&world, &a.ctrl, &b.ctrl, &t);
         if (err) {
             fprintf(stderr, "duel_evolve: play: comparison failed (%d)\n", err);
             rc = 1;
@@ -176,8 +188,8 @@ int duel_cmd_play(int argc, char **argv)
                 rc = 1;
             }
         } else {
-            err = a_west ? duel_play(&a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, tf)
-                         : duel_play(&b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, tf);
+            err = a_west ? duel_play_rules(&world, &a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, tf)
+                         : duel_play_rules(&world, &b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, tf);
         }
         if (tf != NULL) {
             if (err != 0 || rc != 0) {

@@ -1,4 +1,4 @@
-/* duel_run.c - duel_evolve run, resume and config: a coevolution run in a run directory, checkpointed every generation. */
+/* duel_run.c - duel_evolve run, resume and config: a coevolution run, or a run against fixed opponents, in a run directory, checkpointed every generation. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <errno.h>
@@ -13,11 +13,14 @@
 
 #include "duel.h"
 #include "duel_cli.h"
+#include "duel_cmp_cache.h"
 #include "duel_config.h"
 #include "duel_cores.h"
 #include "duel_ctrl.h"
 #include "duel_dominance.h"
 #include "duel_files.h"
+#include "duel_fixed.h"
+#include "duel_pairs.h"
 #include "duel_generations.h"
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
@@ -33,7 +36,9 @@ static volatile sig_atomic_t duel_stop = 0;
 typedef struct duel_run {
     const char *dir;
     duel_config cfg;
-    neat_coev *coev;
+    neat_coev *coev;           /* a coevolution run, or */
+    duel_fixed *fixed;         /* a run against fixed opponents ([opponents] play) */
+    duel_net opp[DUEL_MAX_OPPONENTS]; /* its opponents (blobs malloc'd) */
     duel_games *games;
     uint32_t threads;
     int quiet, json, tty;
@@ -105,7 +110,8 @@ static int duel_save_checkpoint(const duel_run *R)
     char path[4200];
     uint8_t *buf;
     size_t len;
-    int err = neat_coev_save(R->coev, &buf, &len), r;
+    int err = R->fixed != NULL ? neat_pop_save(duel_fixed_pop(R->fixed), &buf, &len) : neat_coev_save(R->coev, &buf, &len),
+        r;
     if (err) {
         fprintf(stderr, "duel_evolve: cannot build the checkpoint: %s\n", neat_strerror(err));
         return -1;
@@ -114,8 +120,30 @@ static int duel_save_checkpoint(const duel_run *R)
     r = duel_file_replace(path, buf, len);
     if (r != 0)
         fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
-    neat_coev_buf_free(R->coev, buf, len);
+    if (R->fixed != NULL)
+        neat_pop_buf_free(duel_fixed_pop(R->fixed), buf, len);
+    else
+        neat_coev_buf_free(R->coev, buf, len);
     return r;
+}
+
+/* The run's generation to play next, and its end. */
+static uint32_t duel_next_gen(const duel_run *R)
+{
+    return R->fixed != NULL ? neat_pop_generation(duel_fixed_pop(R->fixed)) : neat_coev_generation(R->coev);
+}
+
+static void duel_run_free(duel_run *R)
+{
+    uint32_t k;
+    neat_coev_free(R->coev);
+    duel_fixed_free(R->fixed);
+    R->coev = NULL;
+    R->fixed = NULL;
+    for (k = 0; k < DUEL_MAX_OPPONENTS; k++) {
+        free((void *)R->opp[k].blob);
+        R->opp[k].blob = NULL;
+    }
 }
 
 
@@ -149,6 +177,8 @@ static int duel_write_blob(const char *path, const neat_genome *g, const neat_pa
     neat_phenotype_free(&ph);
     return r;
 }
+
+static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ);
 
 static const char *duel_pop_name(uint32_t p)
 {
@@ -212,6 +242,126 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
         if (bad)
             goto fail;
     }
+    if (duel_strength(R, rep->generation, neat_coev_champion(R->coev)) != 0)
+        return -1;
+    return duel_save_checkpoint(R);
+fail:
+    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    return -1;
+}
+
+/* Every K generations ([run] strength_every: generations 0, K, 2K, ...; not
+ * "and the last", which would depend on where a run was extended): the
+ * champion of generation g against every builtin strategy, 288 games each,
+ * into strength.csv (the absolute strength a run reaches, which the
+ * dominance ranking, relative to the run itself, does not show). */
+static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ)
+{
+    char path[4200], row[600];
+    neat_phenotype ph;
+    duel_cli_ctrl a, b[DUEL_N_BUILTINS];
+    duel_pair pairs[DUEL_N_BUILTINS];
+    struct stat st;
+    size_t at;
+    int k, err;
+    if (R->cfg.strength_every == 0 || g % R->cfg.strength_every != 0)
+        return 0;
+    neat_phenotype_init(&ph, NULL);
+    err = neat_phenotype_load(&ph, champ, &R->cfg.neat);
+    memset(&a, 0, sizeof a);
+    a.blob = ph.blob;
+    a.blob_len = ph.blob_len;
+    for (k = 0; k < DUEL_N_BUILTINS; k++) {
+        memset(&b[k], 0, sizeof b[k]);
+        b[k].ctrl.builtin = k;
+        pairs[k].a = &a;
+        pairs[k].b = &b[k];
+    }
+    if (err == 0)
+        err = duel_pairs_play(&R->cfg.world, pairs, DUEL_N_BUILTINS, R->threads, NULL, NULL);
+    neat_phenotype_free(&ph);
+    if (err) {
+        fprintf(stderr, "duel_evolve: generation %u: the champion's strength could not be measured\n", g);
+        return -1;
+    }
+    duel_path(path, sizeof path, R->dir, "strength.csv");
+    if (stat(path, &st) != 0 || st.st_size == 0) {
+        at = (size_t)snprintf(row, sizeof row, "generation");
+        for (k = 0; k < DUEL_N_BUILTINS; k++) {
+            const char *n = duel_builtin_name(k);
+            at += (size_t)snprintf(row + at, sizeof row - at, ",%s_wins,%s_losses,%s_draws,%s_timeouts", n, n, n, n);
+        }
+        snprintf(row + at, sizeof row - at, "\n");
+        if (duel_file_append(path, row) != 0)
+            goto fail;
+    }
+    at = (size_t)snprintf(row, sizeof row, "%u", g);
+    for (k = 0; k < DUEL_N_BUILTINS; k++)
+        at += (size_t)snprintf(row + at, sizeof row - at, ",%u,%u,%u,%u", pairs[k].tally.wins_a, pairs[k].tally.wins_b,
+                               pairs[k].tally.draws, pairs[k].tally.timeouts);
+    snprintf(row + at, sizeof row - at, "\n");
+    if (duel_file_append(path, row) == 0)
+        return 0;
+fail:
+    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    return -1;
+}
+
+/* Opponent k's name in generations.csv's columns: its builtin's, or o1, o2, ... */
+static void duel_opp_label(const duel_run *R, uint32_t k, char *buf, size_t cap)
+{
+    if (R->opp[k].blob == NULL)
+        snprintf(buf, cap, "%s", duel_builtin_name((int)R->opp[k].len));
+    else
+        snprintf(buf, cap, "o%u", k + 1u);
+}
+
+/* A generation of a run against fixed opponents: its champion's blob and
+ * genome, its row of generations.csv (the champion's wins, losses, draws
+ * and timeouts against each opponent), the strength, the checkpoint. */
+static int duel_record_fixed(duel_run *R, const duel_fixed_report *rep, double secs)
+{
+    char path[4200], row[4000], label[32];
+    neat_pop *pop = duel_fixed_pop(R->fixed);
+    const neat_params *np = neat_pop_params(pop);
+    const neat_genome *champ = neat_pop_last_best(pop);
+    struct stat st;
+    size_t at;
+    uint32_t k;
+
+    snprintf(row, sizeof row, "champions/gen-%05u.blob", rep->generation);
+    duel_path(path, sizeof path, R->dir, row);
+    if (duel_write_blob(path, champ, np) != 0)
+        return -1;
+    snprintf(row, sizeof row, "champions/gen-%05u.genome", rep->generation);
+    duel_path(path, sizeof path, R->dir, row);
+    if (duel_genome_write(path, champ, np->n_inputs, np->n_outputs) != 0)
+        return -1;
+    duel_path(path, sizeof path, R->dir, "generations.csv");
+    if (stat(path, &st) != 0 || st.st_size == 0) {
+        at = (size_t)snprintf(row, sizeof row, "generation,best_fitness,mean_fitness,species,delta_t,mean_hidden,"
+                                               "mean_connections,best_hidden,best_connections,host_games,games");
+        for (k = 0; k < R->cfg.opp.n; k++) {
+            duel_opp_label(R, k, label, sizeof label);
+            at += (size_t)snprintf(row + at, sizeof row - at, ",%s_wins,%s_losses,%s_draws,%s_timeouts", label, label,
+                                   label, label);
+        }
+        snprintf(row + at, sizeof row - at, ",seconds\n");
+        if (duel_file_append(path, row) != 0)
+            goto fail;
+    }
+    at = (size_t)snprintf(row, sizeof row, "%u,%.0f,%.4f,%u,%.4f,%.4f,%.4f,%u,%u,%u,%llu", rep->generation,
+                          rep->best_fitness, rep->mean_fitness, rep->species, rep->delta_t, rep->mean_hidden,
+                          rep->mean_conns, rep->best_hidden, rep->best_conns, rep->host_games,
+                          (unsigned long long)rep->games);
+    for (k = 0; k < R->cfg.opp.n; k++)
+        at += (size_t)snprintf(row + at, sizeof row - at, ",%u,%u,%u,%u", rep->best_vs[k].wins_a,
+                               rep->best_vs[k].wins_b, rep->best_vs[k].draws, rep->best_vs[k].timeouts);
+    snprintf(row + at, sizeof row - at, ",%.3f\n", secs);
+    if (duel_file_append(path, row) != 0)
+        goto fail;
+    if (duel_strength(R, rep->generation, champ) != 0)
+        return -1;
     return duel_save_checkpoint(R);
 fail:
     fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
@@ -326,6 +476,49 @@ static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
 }
 
 
+/* A generation of a run against fixed opponents on stderr (and --json, log.txt) */
+static void duel_report_fixed(duel_run *R, const duel_fixed_report *rep, double secs)
+{
+    uint32_t gens_done = rep->generation + 1u - R->first_gen, left = R->cfg.generations - rep->generation - 1u, k;
+    double elapsed = duel_now() - R->started, gps = secs > 0 ? rep->games / secs : 0;
+    char eta[32], vs[600], label[32];
+    size_t at = 0;
+    vs[0] = '\0';
+    for (k = 0; k < R->cfg.opp.n && at < sizeof vs; k++) {
+        duel_opp_label(R, k, label, sizeof label);
+        at += (size_t)snprintf(vs + at, sizeof vs - at, "%s%s %u:%u", k ? ", " : "", label, rep->best_vs[k].wins_a,
+                               rep->best_vs[k].wins_b);
+    }
+    duel_eta(eta, sizeof eta, elapsed / gens_done * left);
+    duel_clear_bar(R);
+    if (!R->quiet)
+        fprintf(stderr, "gen %u (%u/%u)  best %.0f  mean %.2f  species %u  champion (%u hidden, %u conns) vs %s  "
+                        "%.0f games/s  ETA %s\n",
+                rep->generation, rep->generation + 1u, R->cfg.generations, rep->best_fitness, rep->mean_fitness,
+                rep->species, rep->best_hidden, rep->best_conns, vs, gps, eta);
+    if (R->json) {
+        printf("{\"generation\":%u,\"best\":%.0f,\"mean\":%.4f,\"species\":%u,\"delta_t\":%.4f,"
+               "\"mean_hidden\":%.4f,\"mean_connections\":%.4f,\"best_hidden\":%u,\"best_connections\":%u,"
+               "\"against\":[",
+               rep->generation, rep->best_fitness, rep->mean_fitness, rep->species, rep->delta_t, rep->mean_hidden,
+               rep->mean_conns, rep->best_hidden, rep->best_conns);
+        for (k = 0; k < R->cfg.opp.n; k++) {
+            duel_opp_label(R, k, label, sizeof label);
+            printf("%s{\"opponent\":\"%s\",\"wins\":%u,\"losses\":%u,\"draws\":%u,\"timeouts\":%u}", k ? "," : "",
+                   label, rep->best_vs[k].wins_a, rep->best_vs[k].wins_b, rep->best_vs[k].draws,
+                   rep->best_vs[k].timeouts);
+        }
+        printf("],\"games\":%llu,\"seconds\":%.3f,\"games_per_s\":%.0f,\"eta_s\":%.0f}\n",
+               (unsigned long long)rep->games, secs, gps, elapsed / gens_done * left);
+        fflush(stdout);
+    }
+    duel_log(R, "generation %u: best %.0f of %u games, mean %.2f, species %u, champion %u hidden node%s, %u "
+                "connection%s, against %s; %llu games in %.2f s",
+             rep->generation, rep->best_fitness, rep->host_games, rep->mean_fitness, rep->species, rep->best_hidden,
+             duel_s(rep->best_hidden), rep->best_conns, duel_s(rep->best_conns), vs, (unsigned long long)rep->games,
+             secs);
+}
+
 /* The food of generation g's training games: the rules' training items, or
  * ([run] train_layouts = comparison) one of the 144 comparison layouts
  * drawn from the run's seed and the generation (the same for any number of
@@ -347,25 +540,30 @@ static int duel_loop(duel_run *R)
                                     "(duel_evolve resume continues from it)\n");
     R->tty = isatty(2);
     R->started = duel_now();
-    R->first_gen = neat_coev_generation(R->coev);
+    R->first_gen = duel_next_gen(R);
     duel_games_on_progress(R->games, duel_on_progress, R);
-    while (neat_coev_generation(R->coev) < R->cfg.generations) {
+    while (duel_next_gen(R) < R->cfg.generations) {
         neat_coev_report rep;
+        duel_fixed_report frep;
         double t0 = duel_now(), secs;
         int err;
         if (R->log_failed)
             return 1; /* what was done is saved; resume continues from it */
         if (duel_stop || duel_mpi_stop_requested()) {
-            uint32_t n = neat_coev_generation(R->coev);
+            uint32_t n = duel_next_gen(R);
             duel_clear_bar(R);
             duel_log(R, "interrupted before generation %u", n);
             fprintf(stderr, "duel_evolve: interrupted; %u generation%s saved. Resume with: duel_evolve resume %s\n",
                     n, n == 1 ? " is" : "s are", R->dir);
             return 130;
         }
-        R->gen_in_flight = neat_coev_generation(R->coev);
-        duel_games_set_training(R->games, duel_train_config(&R->cfg, R->gen_in_flight));
-        err = neat_coev_step(R->coev, duel_games_play, R->games, &rep);
+        R->gen_in_flight = duel_next_gen(R);
+        if (R->fixed != NULL) {
+            err = duel_fixed_step(R->fixed, R->games, &frep);
+        } else {
+            duel_games_set_training(R->games, duel_train_config(&R->cfg, R->gen_in_flight));
+            err = neat_coev_step(R->coev, duel_games_play, R->games, &rep);
+        }
         if (err) {
             duel_clear_bar(R);
             fprintf(stderr, "duel_evolve: generation %u failed: %s\n", R->gen_in_flight, duel_game_error(err));
@@ -374,6 +572,12 @@ static int duel_loop(duel_run *R)
         }
         secs = duel_now() - t0;
         R->gen_secs += secs;
+        if (R->fixed != NULL) {
+            if (duel_record_fixed(R, &frep, secs) != 0)
+                return 1;
+            duel_report_fixed(R, &frep, secs);
+            continue;
+        }
         if (duel_record(R, &rep, secs) != 0)
             return 1;
         duel_report(R, &rep, secs);
@@ -382,6 +586,19 @@ static int duel_loop(duel_run *R)
         duel_log(R, "interrupted after the last generation");
         fprintf(stderr, "duel_evolve: interrupted; the run is complete (%u generations)\n", R->cfg.generations);
         return 130;
+    }
+    if (R->fixed != NULL) {
+        const neat_genome *b = neat_pop_last_best(duel_fixed_pop(R->fixed));
+        uint32_t dh = neat_genome_hidden_count(b), dc = neat_genome_enabled_count(b);
+        duel_log(R, "finished %u generation%s: the last champion has %u hidden node%s, %u connection%s",
+                 R->cfg.generations, duel_s(R->cfg.generations), dh, duel_s(dh), dc, duel_s(dc));
+        if (R->log_failed)
+            return 1;
+        if (!R->quiet)
+            fprintf(stderr, "done: %u generation%s in %s; the last champion: %u hidden node%s, %u connection%s "
+                            "(champions/gen-%05u.blob)\n", R->cfg.generations, duel_s(R->cfg.generations), R->dir,
+                    dh, duel_s(dh), dc, duel_s(dc), R->cfg.generations - 1u);
+        return 0;
     }
     {
         neat_dominant d;
@@ -507,7 +724,7 @@ static int duel_go(duel_run *R)
         /* a generation's host games go out one host's games at a time: more ranks than hosts would wait */
         fprintf(stderr, "duel_evolve: %u MPI ranks for a run of 2 x %u networks: at most %u ranks can play its "
                         "games\n", ranks, R->cfg.neat.pop_size, hosts);
-        neat_coev_free(R->coev);
+        duel_run_free(R);
         return 2;
     }
     err = duel_games_create(&R->games, R->threads == 0 && ranks > 1 ? duel_mpi_default_threads() : R->threads,
@@ -519,7 +736,7 @@ static int duel_go(duel_run *R)
     if (duel_games_set_rules(R->games, &R->cfg.world) != 0) {
         fprintf(stderr, "duel_evolve: the run's [world] rules cannot make a game\n");
         duel_games_free(R->games);
-        neat_coev_free(R->coev);
+        duel_run_free(R);
         return 2;
     }
     duel_mpi_attach(R->games);
@@ -537,18 +754,167 @@ static int duel_go(duel_run *R)
     if (R->log_failed && err == 0)
         err = 1; /* its last lines are missing from log.txt: said on stderr, and not a success */
     duel_games_free(R->games);
-    neat_coev_free(R->coev);
+    duel_run_free(R);
     return err;
 }
 
-/* The run's world in its checkpoint (the game tag): its rules' canonical
- * bytes, so that a resume can tell they are the same (docs/tools.md). */
-static int duel_tag_world(duel_run *R)
+/* The run's tag in its checkpoint (the game tag): the world's rules first
+ * (their canonical bytes: duel_ckpt_world reads them), then what else makes
+ * its games: "RUN1", the training food ([run] train_layouts), the number of
+ * fixed opponents and, for a run against them, its seed, [opponents] games
+ * and fitness, the step mode, and each opponent (a builtin's number, or a
+ * blob's hash). Resume compares it with what config.ini makes: a run's
+ * games cannot change under it. */
+#define DUEL_TAG_MAX (DUEL_RULES_BYTES + 32 + 12 * DUEL_MAX_OPPONENTS)
+static size_t duel_put_u32(uint8_t *p, uint32_t v)
 {
-    uint8_t bytes[DUEL_RULES_BYTES];
-    if (duel_rules_encode(&R->cfg.world, bytes) != DUEL_OK)
+    p[0] = (uint8_t)v;
+    p[1] = (uint8_t)(v >> 8);
+    p[2] = (uint8_t)(v >> 16);
+    p[3] = (uint8_t)(v >> 24);
+    return 4;
+}
+
+static int duel_run_tag(const duel_run *R, uint8_t buf[DUEL_TAG_MAX], size_t *len)
+{
+    size_t at = DUEL_RULES_BYTES;
+    uint32_t k;
+    if (duel_rules_encode(&R->cfg.world, buf) != DUEL_OK)
         return NEAT_E_ARG;
-    return neat_coev_set_game(R->coev, bytes, sizeof bytes);
+    memcpy(buf + at, "RUN1", 4);
+    at += 4;
+    at += duel_put_u32(buf + at, (uint32_t)R->cfg.train_layouts);
+    at += duel_put_u32(buf + at, R->cfg.opp.n);
+    if (R->cfg.opp.n > 0) {
+        at += duel_put_u32(buf + at, R->cfg.seed);
+        at += duel_put_u32(buf + at, R->cfg.opp.layouts);
+        at += duel_put_u32(buf + at, (uint32_t)R->cfg.opp.fitness);
+        at += duel_put_u32(buf + at, (uint32_t)R->cfg.neat.net_step);
+        for (k = 0; k < R->cfg.opp.n; k++) {
+            uint64_t id = R->opp[k].blob != NULL ? duel_blob_hash(R->opp[k].blob, R->opp[k].len) : (uint64_t)R->opp[k].len;
+            at += duel_put_u32(buf + at, R->opp[k].blob != NULL);
+            at += duel_put_u32(buf + at, (uint32_t)id);
+            at += duel_put_u32(buf + at, (uint32_t)(id >> 32));
+        }
+    }
+    *len = at;
+    return 0;
+}
+
+static int duel_tag_run(duel_run *R)
+{
+    uint8_t tag[DUEL_TAG_MAX];
+    size_t len;
+    int e = duel_run_tag(R, tag, &len);
+    if (e)
+        return e;
+    return R->fixed != NULL ? neat_pop_set_game(duel_fixed_pop(R->fixed), tag, len)
+                            : neat_coev_set_game(R->coev, tag, len);
+}
+
+/* A resumed run's tag against config.ini's: 0, or -1 after one line naming
+ * what changed. An empty tag (a run from before the rules were data) is
+ * world v1's with the training food. */
+static int duel_check_tag(const duel_run *R, const uint8_t *tag, size_t len, const char *path)
+{
+    uint8_t want[DUEL_TAG_MAX];
+    size_t wlen;
+    duel_rules made;
+    char a[40], b[40];
+    if (duel_run_tag(R, want, &wlen) != 0)
+        return -1;
+    made = *duel_rules_v1();
+    if (len > 0 && duel_rules_decode(&made, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, NULL) != DUEL_OK) {
+        fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged\n", path);
+        return -1;
+    }
+    if (!duel_rules_equal(&made, &R->cfg.world)) {
+        fprintf(stderr, "duel_evolve: %s: the run was made in world %s, but config.ini's [world] says %s: a run's "
+                        "rules cannot change (restore config.ini, or start a new run)\n", path,
+                duel_world_label(&made, a, sizeof a), duel_world_label(&R->cfg.world, b, sizeof b));
+        return -1;
+    }
+    if (len == 0 ? R->cfg.train_layouts != DUEL_TRAIN_FIXED || R->cfg.opp.n != 0
+                 : len != wlen || memcmp(tag, want, len) != 0) {
+        fprintf(stderr, "duel_evolve: %s: the run was made with other games than config.ini now makes ([run] "
+                        "train_layouts, [opponents], their files in opponents/, or net_step changed): restore them, "
+                        "or start a new run\n", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* The opponents of a run against fixed ones: builtin:NAME as a builtin,
+ * any other name a blob or genome file (a genome's network as a sync blob)
+ * checked by the runtime, with the duel's 13 inputs and 3 outputs. From
+ * config.ini's names (a new run), or (copies = 1) from the run's own
+ * copies, opponents/NN.blob, which a new run writes so that its games never
+ * depend on files outside it. 0, or 2 after one line on stderr. */
+static int duel_load_opponents(duel_run *R, int copies)
+{
+    char path[4200];
+    uint32_t k;
+    for (k = 0; k < R->cfg.opp.n; k++) {
+        const char *spec = R->cfg.opp.spec[k];
+        uint8_t *blob;
+        size_t len, need;
+        void *mem;
+        nrt_net net;
+        int e;
+        if (strncmp(spec, "builtin:", 8) == 0) {
+            R->opp[k].blob = NULL;
+            R->opp[k].len = (size_t)duel_builtin_parse(spec + 8);
+            continue;
+        }
+        if (copies)
+            snprintf(path, sizeof path, "%s/opponents/%02u.blob", R->dir, k + 1u);
+        else
+            snprintf(path, sizeof path, "%s", spec);
+        if (duel_cli_read_blob(path, &blob, &len) != 0)
+            return 2;
+        e = nrt_mem_required(blob, len, &need);
+        mem = e == 0 ? malloc(need) : NULL;
+        if (e == 0 && mem == NULL)
+            e = NRT_E_NOMEM;
+        if (e == 0)
+            e = nrt_load(&net, blob, len, mem, need);
+        if (e == 0 && (net.n_inputs != DUEL_N_INPUTS || net.n_outputs != DUEL_N_OUTPUTS))
+            e = NRT_E_COUNTS;
+        free(mem);
+        if (e != 0) {
+            fprintf(stderr, "duel_evolve: [opponents] %s: not a duel controller: %s\n", path,
+                    e == NRT_E_COUNTS ? "it does not have the duel's 13 inputs and 3 outputs" : nrt_strerror(e));
+            free(blob);
+            return 2;
+        }
+        R->opp[k].blob = blob;
+        R->opp[k].len = len;
+    }
+    return 0;
+}
+
+/* A new run's copies of its opponents' blobs: opponents/NN.blob */
+static int duel_copy_opponents(const duel_run *R)
+{
+    char path[4200];
+    uint32_t k;
+    if (R->cfg.opp.n == 0)
+        return 0;
+    snprintf(path, sizeof path, "%s/opponents", R->dir);
+    if (duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
+        return -1;
+    }
+    for (k = 0; k < R->cfg.opp.n; k++) {
+        if (R->opp[k].blob == NULL)
+            continue;
+        snprintf(path, sizeof path, "%s/opponents/%02u.blob", R->dir, k + 1u);
+        if (duel_file_replace(path, R->opp[k].blob, R->opp[k].len) != 0) {
+            fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+            return -1;
+        }
+    }
+    return 0;
 }
 
 /* The two populations from the configuration's start topology. 0, or -1
@@ -565,10 +931,21 @@ static int duel_create(duel_run *R)
     }
     st.genome = &g;
     st.keep_weights = 0;
-    e = neat_coev_create(&R->coev, &R->cfg.neat, &R->cfg.coev, &st, R->cfg.seed, NULL);
+    if (R->cfg.opp.n > 0) {
+        neat_pop *pop = NULL;
+        if ((e = duel_load_opponents(R, 0)) != 0) {
+            neat_genome_free(&g, NULL);
+            return e;
+        }
+        e = neat_pop_create(&pop, &R->cfg.neat, &st, R->cfg.seed, NULL);
+        if (e == 0)
+            e = duel_fixed_new(&R->fixed, pop, &R->cfg, R->opp, R->cfg.opp.n);
+    } else {
+        e = neat_coev_create(&R->coev, &R->cfg.neat, &R->cfg.coev, &st, R->cfg.seed, NULL);
+    }
     neat_genome_free(&g, NULL);
     if (e == 0)
-        e = duel_tag_world(R);
+        e = duel_tag_run(R);
     if (e) {
         fprintf(stderr, "duel_evolve: cannot start: %s\n", neat_strerror(e));
         return 1;
@@ -580,11 +957,18 @@ static int duel_create(duel_run *R)
 static void duel_start_words(const duel_run *R, char *buf, size_t cap)
 {
     char st[DUEL_START_MAX_PATH + 16];
-    const neat_genome *g = neat_coev_start(R->coev);
-    uint32_t h = neat_genome_hidden_count(g), c = neat_genome_enabled_count(g);
     duel_start_text(&R->cfg.start, st, sizeof st);
-    snprintf(buf, cap, "start %s (%u hidden node%s, %u connection%s)%s", st, h, duel_s(h), c, duel_s(c),
-             R->cfg.coev.random_fitness ? ", random fitness" : "");
+    if (R->fixed != NULL) {
+        snprintf(buf, cap, "start %s, one population against %u fixed opponent%s", st, R->cfg.opp.n,
+                 duel_s(R->cfg.opp.n));
+        return;
+    }
+    {
+        const neat_genome *g = neat_coev_start(R->coev);
+        uint32_t h = neat_genome_hidden_count(g), c = neat_genome_enabled_count(g);
+        snprintf(buf, cap, "start %s (%u hidden node%s, %u connection%s)%s", st, h, duel_s(h), c, duel_s(c),
+                 R->cfg.coev.random_fitness ? ", random fitness" : "");
+    }
 }
 
 /* A new run's directory: created and locked, refused when it holds a run
@@ -592,7 +976,7 @@ static void duel_start_words(const duel_run *R, char *buf, size_t cap)
  * checkpoint, with config.ini written. 0, or the exit status after one line. */
 static int duel_prepare_dir(duel_run *R)
 {
-    static const char *const files[] = {"generations.csv", "dominance.csv"};
+    static const char *const files[] = {"generations.csv", "dominance.csv", "strength.csv"};
     char err[600], path[4200];
     struct stat st;
     int i;
@@ -621,10 +1005,12 @@ static int duel_prepare_dir(duel_run *R)
                         "the checkpoint and resume, or choose another --out)\n", R->dir, err);
         return 2;
     }
-    for (i = 0; i < 2; i++) {
+    for (i = 0; i < 3; i++) {
         duel_path(path, sizeof path, R->dir, files[i]);
         unlink(path);
     }
+    if (duel_copy_opponents(R) != 0)
+        return 1;
     return duel_write_config(R) != 0 ? 1 : 0;
 }
 
@@ -717,7 +1103,7 @@ static int duel_run_main(int argc, char **argv)
     if ((e = duel_create(&R)) != 0)
         return e;
     if ((e = duel_prepare_dir(&R)) != 0) {
-        neat_coev_free(R.coev);
+        duel_run_free(&R);
         return e;
     }
     duel_threads_words(R.threads, words, sizeof words);
@@ -756,9 +1142,37 @@ static int duel_check_start(duel_run *R, const char *ckpt)
     return 0;
 }
 
+/* The population checkpoint of a run against fixed opponents: 0; 1 when it
+ * does not exist; -1 after one line naming the file and the offset. */
+static int duel_pop_ckpt_load(const char *path, neat_pop **out)
+{
+    uint8_t *buf;
+    size_t len, off = 0;
+    int err;
+    *out = NULL;
+    if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
+        if (errno == ENOENT)
+            return 1;
+        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, errno == EFBIG ? "larger than 1 GB" : strerror(errno));
+        return -1;
+    }
+    if (len >= 8 && memcmp(buf, "NEATCOEV", 8) == 0) {
+        fprintf(stderr, "duel_evolve: %s: a coevolution's checkpoint, but config.ini names [opponents]: restore the "
+                        "run's config.ini\n", path);
+        free(buf);
+        return -1;
+    }
+    err = neat_pop_load(out, buf, len, NULL, &off);
+    if (err)
+        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(err));
+    free(buf);
+    return err ? -1 : 0;
+}
+
 static int duel_resume_main(int argc, char **argv)
 {
     duel_run R;
+    neat_pop *pop = NULL;
     char err[600], path[4200], *sets[64];
     uint32_t gens = 0, n_sets = 0, k, g;
     int i, c, have_gens = 0, shorten = 0, e;
@@ -835,6 +1249,10 @@ static int duel_resume_main(int argc, char **argv)
         fprintf(stderr, "duel_evolve: --set: a run's [world] rules cannot change; start a new run instead\n");
         return 2;
     }
+    if (memcmp(&R.cfg.opp, &before.opp, sizeof before.opp) != 0) {
+        fprintf(stderr, "duel_evolve: --set: a run's [opponents] cannot change; start a new run instead\n");
+        return 2;
+    }
     if (R.cfg.train_layouts != before.train_layouts) {
         fprintf(stderr, "duel_evolve: --set train_layouts: a run's training food cannot change; start a new run "
                         "instead\n");
@@ -846,76 +1264,92 @@ static int duel_resume_main(int argc, char **argv)
     }
 
     duel_path(path, sizeof path, R.dir, "checkpoint.bin");
-    c = duel_ckpt_load("", path, &R.coev);
+    c = R.cfg.opp.n > 0 ? duel_pop_ckpt_load(path, &pop) : duel_ckpt_load("", path, &R.coev);
     if (c < 0)
         return 2;
+    if (R.cfg.opp.n > 0 && (e = duel_load_opponents(&R, 1)) != 0) {
+        neat_pop_free(pop);
+        duel_run_free(&R);
+        return e;
+    }
     if (c > 0) {
         /* died before its first checkpoint: start from generation 0; but a run that recorded
          * generations and lost its checkpoint cannot go on */
         if (duel_has_history(R.dir, err, sizeof err)) {
             fprintf(stderr, "duel_evolve: %s: missing, but the run directory holds %s: cannot resume without it "
                             "(restore it from a backup, or start a new run)\n", path, err);
+            duel_run_free(&R);
             return 2;
         }
+        duel_run_free(&R);
         if ((e = duel_create(&R)) != 0)
             return e;
+    } else if (R.cfg.opp.n > 0) {
+        size_t tlen = 0;
+        const uint8_t *tag = neat_pop_game(pop, &tlen);
+        if (duel_check_tag(&R, tag, tlen, path) != 0) {
+            neat_pop_free(pop);
+            duel_run_free(&R);
+            return 2;
+        }
+        e = neat_pop_set_params(pop, &R.cfg.neat);
+        if (e == 0)
+            e = duel_fixed_new(&R.fixed, pop, &R.cfg, R.opp, R.cfg.opp.n);
+        else
+            neat_pop_free(pop);
+        if (e) {
+            fprintf(stderr, "duel_evolve: the overrides do not fit this run (pop_size cannot change): %s\n",
+                    neat_strerror(e));
+            duel_run_free(&R);
+            return 2;
+        }
     } else {
+        size_t tlen = 0;
+        const uint8_t *tag = neat_coev_game(R.coev, &tlen);
         if (neat_coev_seed(R.coev) != R.cfg.seed) {
             fprintf(stderr, "duel_evolve: %s: seed %llu, but config.ini says %u\n", path,
                     (unsigned long long)neat_coev_seed(R.coev), R.cfg.seed);
-            neat_coev_free(R.coev);
+            duel_run_free(&R);
             return 2;
         }
-        if (duel_check_start(&R, path) != 0) {
-            neat_coev_free(R.coev);
+        if (duel_check_start(&R, path) != 0 || duel_check_tag(&R, tag, tlen, path) != 0) {
+            duel_run_free(&R);
             return 2;
-        }
-        {
-            duel_rules made;
-            char a[40], b[40];
-            if (duel_ckpt_world(R.coev, path, &made) != 0) {
-                neat_coev_free(R.coev);
-                return 2;
-            }
-            if (!duel_rules_equal(&made, &R.cfg.world)) {
-                fprintf(stderr, "duel_evolve: %s: the run was made in world %s, but config.ini's [world] says %s: a "
-                                "run's rules cannot change (restore config.ini, or start a new run)\n", path,
-                        duel_world_label(&made, a, sizeof a), duel_world_label(&R.cfg.world, b, sizeof b));
-                neat_coev_free(R.coev);
-                return 2;
-            }
-            /* a run from before the rules were data carries them from now on */
-            if (duel_tag_world(&R) != 0) {
-                neat_coev_free(R.coev);
-                return 1;
-            }
         }
         e = neat_coev_set_params(R.coev, &R.cfg.neat, &R.cfg.coev);
         if (e) {
             fprintf(stderr, "duel_evolve: the overrides do not fit this run (pop_size cannot change): %s\n",
                     neat_strerror(e));
-            neat_coev_free(R.coev);
+            duel_run_free(&R);
             return 2;
         }
     }
-    if (e) {
-        fprintf(stderr, "duel_evolve: cannot resume: %s\n", neat_strerror(e));
+    /* a run from before the rules were data carries them from now on */
+    if (duel_tag_run(&R) != 0) {
+        fprintf(stderr, "duel_evolve: cannot resume: out of memory\n");
+        duel_run_free(&R);
         return 1;
     }
-    g = neat_coev_generation(R.coev);
+    g = duel_next_gen(&R);
     /* rows written after the checkpoint belong to a generation that runs
      * again: generations.csv keeps the generations before it, dominance.csv
      * (whose first field is the level) the levels it holds */
     duel_path(path, sizeof path, R.dir, "generations.csv");
     if (duel_csv_keep_before(path, g) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
-        neat_coev_free(R.coev);
+        duel_run_free(&R);
+        return 1;
+    }
+    duel_path(path, sizeof path, R.dir, "strength.csv");
+    if (duel_csv_keep_before(path, g) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
+        duel_run_free(&R);
         return 1;
     }
     duel_path(path, sizeof path, R.dir, "dominance.csv");
-    if (duel_csv_keep_before(path, neat_coev_dominant_count(R.coev) + 1u) != 0) {
+    if (R.coev != NULL && duel_csv_keep_before(path, neat_coev_dominant_count(R.coev) + 1u) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
-        neat_coev_free(R.coev);
+        duel_run_free(&R);
         return 1;
     }
     for (k = 0; k < n_sets; k++)
@@ -923,7 +1357,7 @@ static int duel_resume_main(int argc, char **argv)
     if (g > R.cfg.generations) {
         fprintf(stderr, "duel_evolve: resume: the run has played %u generations already, more than %u\n", g,
                 R.cfg.generations);
-        neat_coev_free(R.coev);
+        duel_run_free(&R);
         return 2;
     }
     if (R.cfg.generations != before.generations) {
@@ -935,7 +1369,7 @@ static int duel_resume_main(int argc, char **argv)
                     before.generations, R.cfg.generations);
     }
     if (duel_write_config(&R) != 0) {
-        neat_coev_free(R.coev);
+        duel_run_free(&R);
         return 1;
     }
     {

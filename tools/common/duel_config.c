@@ -19,6 +19,7 @@ static const neat_cfg_key duel_run_keys[] = {
     RUN_KEY(generations, NEAT_CFG_U32, 1, 1000000),
     RUN_KEY(seed, NEAT_CFG_U32, 0, 4294967295.0),
     {"train_layouts", NEAT_CFG_ENUM, offsetof(duel_config, train_layouts), 0, 1, duel_train_names},
+    RUN_KEY(strength_every, NEAT_CFG_U32, 0, 1000000),
 };
 static const neat_cfg_key duel_coev_keys[] = {
     COEV_KEY(species_opponents, 0, 64),
@@ -217,7 +218,94 @@ static const char *duel_key_home(const char *name)
             if (strcmp(duel_world_keys[i], name) == 0)
                 return "world";
     }
+    if (strcmp(name, "play") == 0 || strcmp(name, "games") == 0 || strcmp(name, "fitness") == 0)
+        return "opponents";
     return NULL;
+}
+
+/* [opponents] play = a, b, ...: each a builtin:NAME or a file path (no commas) */
+static int duel_opp_play(duel_opponents *o, const char *v, char *err, size_t err_len)
+{
+    const char *p = v;
+    uint32_t n = 0;
+    duel_opponents got = *o;
+    while (*p != '\0') {
+        const char *end = strchr(p, ','), *stop;
+        size_t len;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        stop = end != NULL ? end : p + strlen(p);
+        while (stop > p && (stop[-1] == ' ' || stop[-1] == '\t'))
+            stop--;
+        len = (size_t)(stop - p);
+        if (len == 0) {
+            snprintf(err, err_len, "[opponents] play: an empty name (opponents are separated by commas)");
+            return -1;
+        }
+        if (n == DUEL_MAX_OPPONENTS) {
+            snprintf(err, err_len, "[opponents] play: more than %d opponents", DUEL_MAX_OPPONENTS);
+            return -1;
+        }
+        if (len >= DUEL_OPP_MAX_SPEC) {
+            snprintf(err, err_len, "[opponents] play: a name of %zu characters (at most %d)", len,
+                     DUEL_OPP_MAX_SPEC - 1);
+            return -1;
+        }
+        memcpy(got.spec[n], p, len);
+        got.spec[n][len] = '\0';
+        if (strncmp(got.spec[n], "builtin:", 8) == 0 && duel_builtin_parse(got.spec[n] + 8) < 0) {
+            snprintf(err, err_len, "[opponents] play: '%s': no such builtin (idle, spinner, forager, hunter, "
+                                   "forager-hunter)", got.spec[n]);
+            return -1;
+        }
+        n++;
+        p = end != NULL ? end + 1 : stop;
+        if (end != NULL && *p == '\0') {
+            snprintf(err, err_len, "[opponents] play: an empty name after the last comma");
+            return -1;
+        }
+    }
+    got.n = n;
+    *o = got;
+    return 0;
+}
+
+static int duel_opp_set(duel_opponents *o, const char *name, const char *value, char *err, size_t err_len)
+{
+    static const char *const keys[] = {"play", "games", "fitness"};
+    if (strcmp(name, "play") == 0)
+        return duel_opp_play(o, value, err, err_len);
+    if (strcmp(name, "games") == 0) {
+        char *end;
+        unsigned long n;
+        if (strcmp(value, "training") == 0) {
+            o->layouts = 0;
+            return 0;
+        }
+        errno = 0;
+        n = strncmp(value, "comparison:", 11) == 0 ? strtoul(value + 11, &end, 10) : 0;
+        if (n < 1 || n > DUEL_CONFIGS || errno || *end != '\0' || value[11] < '0' || value[11] > '9') {
+            snprintf(err, err_len, "[opponents] games = '%s': training, or comparison:N with N in 1..%d", value,
+                     DUEL_CONFIGS);
+            return -1;
+        }
+        o->layouts = (uint32_t)n;
+        return 0;
+    }
+    if (strcmp(name, "fitness") == 0) {
+        if (strcmp(value, "wins") == 0 || strcmp(value, "wins-losses") == 0) {
+            o->fitness = strcmp(value, "wins") == 0 ? DUEL_FIT_WINS : DUEL_FIT_MARGIN;
+            return 0;
+        }
+        snprintf(err, err_len, "[opponents] fitness = '%s': wins or wins-losses", value);
+        return -1;
+    }
+    {
+        const char *near = neat_config_suggest(name, keys, 3);
+        snprintf(err, err_len, "unknown key '%s' in [opponents]%s%s%s", name, near ? " (did you mean '" : "",
+                 near ? near : "", near ? "'?)" : "");
+    }
+    return -1;
 }
 
 static int duel_set_in(duel_config *cfg, const char *section, const char *name, const char *value, char *err,
@@ -234,8 +322,11 @@ static int duel_set_in(duel_config *cfg, const char *section, const char *name, 
         r = neat_config_set(&cfg->neat, name, value, err, err_len);
     else if (strcmp(section, "world") == 0)
         r = duel_world_set(&cfg->world, name, value, err, err_len);
+    else if (strcmp(section, "opponents") == 0)
+        r = duel_opp_set(&cfg->opp, name, value, err, err_len);
     else {
-        snprintf(err, err_len, "unknown section [%s] (expected [run], [coevolution], [neat] or [world])", section);
+        snprintf(err, err_len, "unknown section [%s] (expected [run], [coevolution], [neat], [world] or "
+                               "[opponents])", section);
         return -1;
     }
     if (r != 0 && strncmp(err, "unknown key", 11) == 0) {
@@ -269,7 +360,7 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
                                "start=blob:runs/c1/champions/gen-00123.blob)");
         return -1;
     }
-    if (cfg->neat.pop_stagnation != 0) {
+    if (cfg->neat.pop_stagnation != 0 && cfg->opp.n == 0) {
         snprintf(err, err_len, "[neat] pop_stagnation must be 0 in coevolution: the rule needs an absolute fitness, "
                                "and a count of wins against changing opponents never improves (docs/parameters.md)");
         return -1;
@@ -282,6 +373,11 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
     }
     if (neat_coev_params_check(&cfg->coev, &field) != NEAT_OK) {
         snprintf(err, err_len, "[coevolution] %s out of range", field);
+        return -1;
+    }
+    if (cfg->opp.n > 0 && cfg->coev.random_fitness) {
+        snprintf(err, err_len, "[coevolution] random_fitness is the coevolution's control; a run against fixed "
+                               "opponents ([opponents] play) has none");
         return -1;
     }
     return duel_world_check(&cfg->world, err, err_len);
@@ -360,4 +456,15 @@ void duel_config_dump(FILE *out, const duel_config *cfg)
     neat_config_dump(out, &cfg->neat);
     fprintf(out, "\n[world]\n");
     duel_world_dump(out, &cfg->world);
+    if (cfg->opp.n > 0) {
+        uint32_t k;
+        fprintf(out, "\n[opponents]\nplay = ");
+        for (k = 0; k < cfg->opp.n; k++)
+            fprintf(out, "%s%s", k ? ", " : "", cfg->opp.spec[k]);
+        if (cfg->opp.layouts == 0)
+            fprintf(out, "\ngames = training\n");
+        else
+            fprintf(out, "\ngames = comparison:%u\n", cfg->opp.layouts);
+        fprintf(out, "fitness = %s\n", cfg->opp.fitness == DUEL_FIT_WINS ? "wins" : "wins-losses");
+    }
 }

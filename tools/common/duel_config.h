@@ -33,14 +33,30 @@ enum duel_train_layouts {
     DUEL_TRAIN_COMPARISON = 1 /* "comparison": one of the 144 comparison layouts, drawn per generation */
 };
 
+/* [opponents]: a run of one population against fixed opponents, when play names any */
+#define DUEL_MAX_OPPONENTS 16
+#define DUEL_OPP_MAX_SPEC 1024
+enum duel_fitness {
+    DUEL_FIT_WINS = 0,  /* "wins": the games won (the paper's fitness) */
+    DUEL_FIT_MARGIN = 1 /* "wins-losses": wins - losses + games played (never negative) */
+};
+typedef struct duel_opponents {
+    uint32_t n;                                       /* 0: a coevolution run */
+    char spec[DUEL_MAX_OPPONENTS][DUEL_OPP_MAX_SPEC]; /* builtin:NAME, a champion blob or a genome file */
+    uint32_t layouts;   /* games: 0 the training food from both sides, N > 0 N comparison layouts from both sides */
+    int fitness;        /* enum duel_fitness */
+} duel_opponents;
+
 typedef struct duel_config {
     uint32_t generations; /* [run] generations to play in all */
     uint32_t seed;        /* [run] */
     int train_layouts;    /* [run] enum duel_train_layouts */
+    uint32_t strength_every; /* [run] every K generations the champion against every builtin (strength.csv); 0 never */
     neat_coev_params coev;
     neat_params neat;
     duel_start start;     /* [neat] start */
     duel_rules world;     /* [world]: the duel's chosen rules (v1 by default) */
+    duel_opponents opp;   /* [opponents] */
 } duel_config;
 
 /* The paper's values (Appendix A, section 5): 500 generations, seed 1. */

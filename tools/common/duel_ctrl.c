@@ -6,10 +6,53 @@
 
 #include "duel_ctrl.h"
 #include "neat_coev.h"
+#include "duel_config.h"
 #include "duel_files.h"
 #include "duel_world_cfg.h"
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
+
+int duel_ctrl_run_of(const char *path, char *run, size_t cap)
+{
+    const char *slash = strrchr(path, '/'), *p;
+    char ini[4300];
+    size_t n;
+    if (slash == NULL)
+        return 0;
+    /* RUN/champions/NAME: the directory before "champions" */
+    for (p = slash; p > path && p[-1] != '/'; p--)
+        ;
+    if ((size_t)(slash - p) != 9 || strncmp(p, "champions", 9) != 0)
+        return 0;
+    n = (size_t)(p - path);
+    if (n == 0) {
+        snprintf(run, cap, ".");
+    } else {
+        if (n >= cap)
+            return 0;
+        memcpy(run, path, n - 1u);
+        run[n - 1u] = '\0';
+        if (run[0] == '\0')
+            snprintf(run, cap, "/");
+    }
+    snprintf(ini, sizeof ini, "%s/config.ini", run);
+    return access(ini, F_OK) == 0;
+}
+
+/* The step mode of the run a genome file lies in (its config.ini's
+ * net_step), sync when it is in none: a genome has no mode of its own. */
+static int duel_genome_net_step(const char *path)
+{
+    char run[4200], ini[4300], err[4400];
+    duel_config cfg;
+    if (!duel_ctrl_run_of(path, run, sizeof run))
+        return NEAT_STEP_SYNC;
+    snprintf(ini, sizeof ini, "%s/config.ini", run);
+    duel_config_default(&cfg);
+    if (duel_config_read(&cfg, ini, err, sizeof err) != 0)
+        return NEAT_STEP_SYNC;
+    return cfg.neat.net_step;
+}
 
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
 {
@@ -30,7 +73,8 @@ int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
         }
         *len = neat_blob_size(&g);
         *blob = (uint8_t *)malloc(*len);
-        r = *blob == NULL ? NEAT_E_NOMEM : neat_blob_write(&g, ni, no, *blob, *len, len);
+        r = *blob == NULL ? NEAT_E_NOMEM
+                          : neat_blob_write_step(&g, ni, no, duel_genome_net_step(path), *blob, *len, len);
         neat_genome_free(&g, NULL);
         if (r != 0) {
             fprintf(stderr, "duel_evolve: %s: the genome has no blob: %s\n", path, neat_strerror(r));
@@ -142,7 +186,8 @@ int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r)
         *r = *duel_rules_v1();
         return 0;
     }
-    if (duel_rules_decode(r, tag, len, &off) != DUEL_OK) {
+    /* the rules' bytes come first; what follows is the run's own (docs/tools.md, "The run directory") */
+    if (duel_rules_decode(r, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, &off) != DUEL_OK) {
         fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged at byte %zu of %zu\n", path,
                 off, len);
         return -1;
@@ -154,11 +199,36 @@ int duel_run_world(const char *dir, duel_rules *r)
 {
     char path[4200];
     struct neat_coev *c;
+    uint8_t *buf = NULL;
+    size_t len = 0;
     int e;
     if ((size_t)snprintf(path, sizeof path, "%s/checkpoint.bin", dir) >= sizeof path) {
         fprintf(stderr, "duel_evolve: %s: the path is too long\n", dir);
         return -1;
     }
+    /* a run against fixed opponents checkpoints one population: its tag the same */
+    if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0)
+        buf = NULL;
+    if (buf != NULL && len >= 8 && memcmp(buf, "NEATCKPT", 8) == 0) {
+        neat_pop *pop;
+        size_t off = 0, tlen = 0;
+        const uint8_t *tag;
+        e = neat_pop_load(&pop, buf, len, NULL, &off);
+        free(buf);
+        if (e) {
+            fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(e));
+            return -1;
+        }
+        tag = neat_pop_game(pop, &tlen);
+        e = tlen >= DUEL_RULES_BYTES ? duel_rules_decode(r, tag, DUEL_RULES_BYTES, &off) : DUEL_E_RULES;
+        neat_pop_free(pop);
+        if (e != DUEL_OK) {
+            fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are missing or damaged\n", path);
+            return -1;
+        }
+        return 0;
+    }
+    free(buf);
     e = duel_ckpt_load("", path, &c);
     if (e < 0)
         return -1;
@@ -173,4 +243,28 @@ int duel_run_world(const char *dir, duel_rules *r)
         return 0;
     }
     return duel_world_of_run(r, dir);
+}
+
+int duel_ctrl_world(const char *const *specs, int n, duel_rules *r, int *found)
+{
+    char run[4200], first[4200], a[40], b[40];
+    duel_rules w;
+    int i;
+    *found = 0;
+    for (i = 0; i < n; i++) {
+        if (strncmp(specs[i], "builtin:", 8) == 0 || !duel_ctrl_run_of(specs[i], run, sizeof run))
+            continue;
+        if (duel_run_world(run, &w) != 0)
+            return -1;
+        if (*found && !duel_rules_equal(&w, r)) {
+            fprintf(stderr, "duel_evolve: %s is of world %s, %s of world %s: give --world to play them in one\n",
+                    first, duel_world_label(r, a, sizeof a), specs[i], duel_world_label(&w, b, sizeof b));
+            return -1;
+        }
+        if (!*found)
+            snprintf(first, sizeof first, "%s", specs[i]);
+        *r = w;
+        *found = 1;
+    }
+    return 0;
 }

@@ -18,8 +18,18 @@ typedef struct duel_cli_ctrl {
     char name[256];
 } duel_cli_ctrl;
 
+/* Whether path names a file in a run's champions/ (RUN/champions/NAME with
+ * RUN/config.ini): 1 and RUN in run, else 0. */
+int duel_ctrl_run_of(const char *path, char *run, size_t cap);
+
+/* The world of the runs the controllers come from (each spec a file in a
+ * run's champions/ counts): *found 1 and their world in *r; *found 0 when
+ * none does; -1 after one line when two runs' worlds differ. */
+int duel_ctrl_world(const char *const *specs, int n, duel_rules *r, int *found);
+
 /* Reads the whole file at path into a malloc'd *blob (the caller frees it)
- * of *len bytes, not validated (a genome file gives its network's blob); on
+ * of *len bytes, not validated (a genome file gives its network's blob, in
+ * the step mode of the run it lies in, else sync); on
  * error prints one line naming the file and the problem to stderr and
  * returns -1 (*blob NULL). */
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len);
@@ -41,8 +51,9 @@ int duel_ckpt_load(const char *prefix, const char *path, struct neat_coev **out)
 void duel_cli_ctrl_close(duel_cli_ctrl *c);
 
 /* The world a coevolution checkpoint (read from path) was made in: its game
- * tag, or world v1 when it has none (a run from before the rules were data,
- * checkpoint version 2). 0, or -1 after one line on stderr. */
+ * tag's first DUEL_RULES_BYTES, or world v1 when it has none (a run from
+ * before the rules were data, checkpoint version 2). 0, or -1 after one
+ * line on stderr. */
 int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r);
 
 /* The world of the run in dir: its checkpoint's (duel_ckpt_world), else,
