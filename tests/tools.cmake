@@ -243,7 +243,7 @@ endif()
 # --version: the project's version (project() above), one line on stdout
 add_test(NAME tools/duel_evolve_version COMMAND duel_evolve --version)
 add_test(NAME tools/neat_bench_version COMMAND neat_bench --version)
-set_tests_properties(tools/duel_evolve_version PROPERTIES PASS_REGULAR_EXPRESSION "^duel_evolve ${PROJECT_VERSION} \\(duel world spec")
+set_tests_properties(tools/duel_evolve_version PROPERTIES PASS_REGULAR_EXPRESSION "^duel_evolve ${PROJECT_VERSION} \\(duel world v1 b43972def416b019")
 set_tests_properties(tools/neat_bench_version PROPERTIES PASS_REGULAR_EXPRESSION "^neat_bench ${PROJECT_VERSION} \\(libneat")
 # neat_bench TASK --help: the options described (exit 0), not "--help needs a value"
 add_test(NAME tools/neat_bench_help COMMAND neat_bench xor --help)

@@ -79,6 +79,22 @@ run)
   "${mpi[@]}" -np 2 "$duel" run --config "$cfg" --out part --generations 3 --quiet
   "${mpi[@]}" -np 3 "$duel" resume part --generations 6 --quiet
   same_run ref part
+  # a run in a world of its own, with the propagate step: the rules and the mode reach every rank
+  printf '[world]\nfood_range = 300\nwall_range = 90\n[neat]\nnet_step = propagate\n' > world.ini
+  cat "$cfg" world.ini > wcfg.ini
+  "$duel" run --config wcfg.ini --out wref --quiet --generations 4
+  "${mpi[@]}" -np 3 "$duel" run --config wcfg.ini --out wn3 --threads 1 --quiet --generations 4
+  same_run wref wn3
+  # a run against fixed opponents (builtins and a blob) spreads its games too
+  printf '[opponents]\nplay = builtin:forager-hunter, %s, builtin:forager\ngames = comparison:2\n' \
+    "$tmp/ref/champions/gen-00003.blob" > opp.ini
+  cat "$cfg" world.ini opp.ini > fcfg.ini
+  "$duel" run --config fcfg.ini --out fref --quiet --generations 5 --set strength_every=2
+  "${mpi[@]}" -np 3 "$duel" run --config fcfg.ini --out fn3 --threads 1 --quiet --generations 5 --set strength_every=2
+  cmp fref/checkpoint.bin fn3/checkpoint.bin || fail "fixed: checkpoint differs"
+  cmp fref/strength.csv fn3/strength.csv || fail "fixed: strength.csv differs"
+  diff -r fref/champions fn3/champions || fail "fixed: champions differ"
+  grep -q "mpi: 3 MPI ranks; games sent in [1-9][0-9]* messages" fn3/log.txt || fail "fixed: no games went to the ranks"
   echo "run: ok"
   ;;
 experiment)

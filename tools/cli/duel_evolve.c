@@ -36,7 +36,7 @@ static void duel_usage(FILE *f)
                "       duel_evolve render-net BLOB --out FILE.png [--min-weight W]\n"
                "       duel_evolve export BLOB --c-array NAME [-o FILE.c] [--header FILE.h]\n"
                "A and B: champion blobs or genome files (champions/gen-N.blob, .genome) or builtin:NAME; wherever a BLOB "
-               "is named, a genome file may be. Robot duels of spec v%d (docs/duelsim.md). Under mpirun, run, resume and experiment use every rank "
+               "is named, a genome file may be. Robot duels in world v%d unless a run or --world names another (docs/duel-world.md). Under mpirun, run, resume and experiment use every rank "
                "(docs/cluster.md)%s.\n", DUEL_SPEC_VERSION, duel_mpi_built() ? "" : "; this build has no MPI");
 }
 
@@ -100,8 +100,9 @@ int main(int argc, char **argv)
     }
     if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
         /* the project's version (CMakeLists.txt) and the formats this build reads and writes */
-        printf("duel_evolve %s (duel world spec %d, blob format %d, checkpoint format %d)\n", DUEL_VERSION,
-               DUEL_SPEC_VERSION, NRT_FORMAT_VERSION, NEAT_CHECKPOINT_VERSION);
+        printf("duel_evolve %s (duel world v%d %016llx by default, blob formats %d-%d, checkpoint format %d)\n",
+               DUEL_VERSION, DUEL_SPEC_VERSION, (unsigned long long)duel_rules_id(duel_rules_v1()), NRT_FORMAT_VERSION,
+               NRT_FORMAT_VERSION_PROPAGATE, NEAT_CHECKPOINT_VERSION);
         return duel_mpi_finish(duel_stdout_status("--version", 0));
     }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {

@@ -512,8 +512,8 @@ static void duel_report_fixed(duel_run *R, const duel_fixed_report *rep, double 
                (unsigned long long)rep->games, secs, gps, elapsed / gens_done * left);
         fflush(stdout);
     }
-    duel_log(R, "generation %u: best %.0f of %u games, mean %.2f, species %u, champion %u hidden node%s, %u "
-                "connection%s, against %s; %llu games in %.2f s",
+    duel_log(R, "generation %u: best fitness %.0f (%u games a host), mean %.2f, species %u, champion %u hidden node%s, "
+                "%u connection%s, against %s; %llu games in %.2f s",
              rep->generation, rep->best_fitness, rep->host_games, rep->mean_fitness, rep->species, rep->best_hidden,
              duel_s(rep->best_hidden), rep->best_conns, duel_s(rep->best_conns), vs, (unsigned long long)rep->games,
              secs);

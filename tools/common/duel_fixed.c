@@ -231,7 +231,7 @@ int duel_fixed_step(duel_fixed *f, duel_games *dg, duel_fixed_report *rep)
                     f->m[at].result = 0;
                 }
     duel_games_set_training(dg, DUEL_TRAINING);
-    err = duel_games_play_nets(dg, f->nets, f->m, n);
+    err = duel_games_play_matches(dg, f->nets, (size_t)size + f->n_opp, f->m, n);
     if (err)
         return err;
     fit = (double *)malloc(size * sizeof *fit);

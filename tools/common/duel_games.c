@@ -31,6 +31,7 @@ struct duel_games {
     neat_game *games;
     duel_match *matches;
     const duel_net *nets;
+    size_t n_nets;      /* of a batch of matches */
     size_t n, next, done;
     size_t err_at; /* lowest failing game index, n if none */
     int err;
@@ -393,6 +394,13 @@ neat_game *duel_games_batch(duel_games *dg, size_t *n, uint64_t *batch_no)
     return dg->games;
 }
 
+duel_match *duel_games_batch_matches(duel_games *dg, const duel_net **nets, size_t *n_nets)
+{
+    *nets = dg->nets;
+    *n_nets = dg->n_nets;
+    return dg->games == NULL ? dg->matches : NULL;
+}
+
 size_t duel_games_error_at(const duel_games *dg)
 {
     return dg->err_at;
@@ -526,8 +534,20 @@ int duel_games_play_nets(duel_games *dg, const duel_net *nets, duel_match *m, si
     dg->games = NULL;
     dg->matches = m;
     dg->nets = nets;
+    dg->n_nets = 0;
     dg->remote = NULL; /* games between blobs are another process's share: played here */
     err = duel_games_run(dg, n);
     dg->remote = remote;
     return err;
+}
+
+int duel_games_play_matches(duel_games *dg, const duel_net *nets, size_t n_nets, duel_match *m, size_t n)
+{
+    if (n == 0)
+        return 0;
+    dg->games = NULL;
+    dg->matches = m;
+    dg->nets = nets;
+    dg->n_nets = n_nets;
+    return duel_games_run(dg, n);
 }

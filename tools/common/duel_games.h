@@ -46,6 +46,10 @@ typedef struct duel_match {
     int8_t result;
 } duel_match;
 int duel_games_play_nets(duel_games *dg, const duel_net *nets, duel_match *m, size_t n);
+/* The same as a batch of this process's own (a run against fixed opponents):
+ * played on its threads and, with a remote executor, on other ranks too.
+ * nets has n_nets entries. */
+int duel_games_play_matches(duel_games *dg, const duel_net *nets, size_t n_nets, duel_match *m, size_t n);
 /* After a batch that failed: the index of the lowest failing game. */
 size_t duel_games_error_at(const duel_games *dg);
 
@@ -61,8 +65,11 @@ size_t duel_games_error_at(const duel_games *dg);
 #define DUEL_GAMES_E_REMOTE (-300)
 typedef int (*duel_remote_fn)(void *ud, duel_games *dg);
 void duel_games_set_remote(duel_games *dg, duel_remote_fn fn, void *ud);
-/* The batch in flight, its size, and its number (1 for the first batch). */
+/* The batch in flight, its size, and its number (1 for the first batch):
+ * its games, or NULL for a batch of matches (duel_games_play_matches), whose
+ * matches and networks duel_games_batch_matches gives (NULL otherwise). */
 neat_game *duel_games_batch(duel_games *dg, size_t *n, uint64_t *batch_no);
+duel_match *duel_games_batch_matches(duel_games *dg, const duel_net **nets, size_t *n_nets);
 /* Up to max games not yet handed out, from *from on: how many (0: none left). */
 size_t duel_games_take(duel_games *dg, size_t max, size_t *from);
 /* count games played elsewhere, with their steps; err (0 if none) at game err_at of the batch. */

@@ -80,12 +80,32 @@ static void duel_disp_reset(duel_disp *d, size_t n_games)
     d->blob_len = 0;
 }
 
+/* Room for n networks in the batch: their offsets and lengths, and each peer's record of what it was sent. 0 or -1. */
+static int duel_disp_room(duel_disp *d, size_t n)
+{
+    int k;
+    if (n > d->nets_cap) {
+        size_t old = d->nets_cap, c1 = d->nets_cap, c2 = d->nets_cap;
+        if (duel_grow((void **)&d->off, &c1, n, sizeof *d->off) != 0 ||
+            duel_grow((void **)&d->len, &c2, n, sizeof *d->len) != 0)
+            return -1;
+        d->nets_cap = c1 < c2 ? c1 : c2;
+        for (k = 0; k < d->n_peers; k++) {
+            uint8_t *ns = (uint8_t *)realloc(d->peers[k].sent, d->nets_cap);
+            if (ns == NULL)
+                return -1;
+            memset(ns + old, 0, d->nets_cap - old);
+            d->peers[k].sent = ns;
+        }
+    }
+    return 0;
+}
+
 /* The id of g's network in this batch, its blob written on first sight. -1 if it cannot be encoded (*err). */
 static long duel_disp_net(duel_disp *d, const neat_genome *g, const neat_params *p, int *err)
 {
     size_t h = (size_t)(((uintptr_t)g >> 4) * 11400714819323198485ull) & (d->hcap - 1), need;
     uint32_t id;
-    int k;
     while (d->hkey[h] != NULL) {
         if (d->hkey[h] == g)
             return (long)d->hval[h];
@@ -96,30 +116,16 @@ static long duel_disp_net(duel_disp *d, const neat_genome *g, const neat_params 
         *err = NEAT_E_NOMEM;
         return -1;
     }
-    if (d->n_nets + 1u > d->nets_cap) {
-        size_t old = d->nets_cap, c1 = d->nets_cap, c2 = d->nets_cap;
-        if (duel_grow((void **)&d->off, &c1, d->n_nets + 1u, sizeof *d->off) != 0 ||
-            duel_grow((void **)&d->len, &c2, d->n_nets + 1u, sizeof *d->len) != 0) {
-            *err = NEAT_E_NOMEM;
-            return -1;
-        }
-        d->nets_cap = c1 < c2 ? c1 : c2;
-        for (k = 0; k < d->n_peers; k++) {
-            uint8_t *ns = (uint8_t *)realloc(d->peers[k].sent, d->nets_cap);
-            if (ns == NULL) {
-                *err = NEAT_E_NOMEM;
-                return -1;
-            }
-            memset(ns + old, 0, d->nets_cap - old);
-            d->peers[k].sent = ns;
-        }
+    if (duel_disp_room(d, d->n_nets + 1u) != 0) {
+        *err = NEAT_E_NOMEM;
+        return -1;
     }
     if (duel_grow((void **)&d->blob, &d->blob_cap, d->blob_len + need, 1) != 0) {
         *err = NEAT_E_NOMEM;
         return -1;
     }
     id = d->n_nets;
-    *err = neat_blob_write(g, p->n_inputs, p->n_outputs, d->blob + d->blob_len, need, &d->len[id]);
+    *err = neat_blob_write_step(g, p->n_inputs, p->n_outputs, p->net_step, d->blob + d->blob_len, need, &d->len[id]);
     if (*err)
         return -1;
     d->off[id] = d->blob_len;
@@ -134,9 +140,11 @@ static long duel_disp_net(duel_disp *d, const neat_genome *g, const neat_params 
  * (the batch's error is set); -1 when MPI failed. */
 static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot *s, size_t from, size_t count)
 {
-    size_t n_all, i, pos, n_new = 0;
+    size_t n_all, i, pos, n_new = 0, n_nets = 0;
     uint64_t batch;
     neat_game *games = duel_games_batch(dg, &n_all, &batch);
+    const duel_net *nets = NULL;
+    duel_match *matches = duel_games_batch_matches(dg, &nets, &n_nets);
     const neat_params *p = duel_games_params(dg);
     duel_work_hdr h;
     uint32_t *ids;
@@ -147,8 +155,14 @@ static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot
         return 1;
     }
     for (i = 0; i < 2 * count; i++) {
-        const neat_game *gm = &games[from + i / 2];
-        long id = duel_disp_net(d, i % 2 ? gm->b : gm->a, p, &err);
+        long id;
+        if (matches != NULL) {
+            /* a batch of matches names its networks by index */
+            id = (long)(i % 2 ? matches[from + i / 2].b : matches[from + i / 2].a);
+        } else {
+            const neat_game *gm = &games[from + i / 2];
+            id = duel_disp_net(d, i % 2 ? gm->b : gm->a, p, &err);
+        }
         if (id < 0) {
             free(ids);
             duel_games_remote_done(dg, 0, 0, err, from + i / 2);
@@ -161,7 +175,7 @@ static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot
     for (i = 0; i < 2 * count; i++)
         if (!pe->sent[ids[i]]) {
             pe->sent[ids[i]] = 2; /* in this message */
-            pos += 8 + d->len[ids[i]];
+            pos += 8 + (matches != NULL ? (nets[ids[i]].blob != NULL ? nets[ids[i]].len : 0) : d->len[ids[i]]);
             n_new++;
         }
     pos += count * sizeof(duel_wire_match);
@@ -185,12 +199,20 @@ static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot
     pos = sizeof h;
     for (i = 0; i < 2 * count; i++)
         if (pe->sent[ids[i]] == 2) {
+            const uint8_t *blob;
             uint32_t w[2];
             w[0] = ids[i];
-            w[1] = (uint32_t)d->len[ids[i]];
+            if (matches != NULL) {
+                blob = nets[ids[i]].blob;
+                w[1] = blob != NULL ? (uint32_t)nets[ids[i]].len : DUEL_WIRE_BUILTIN + (uint32_t)nets[ids[i]].len;
+            } else {
+                blob = d->blob + d->off[ids[i]];
+                w[1] = (uint32_t)d->len[ids[i]];
+            }
             memcpy(s->buf + pos, w, sizeof w);
-            memcpy(s->buf + pos + 8, d->blob + d->off[ids[i]], d->len[ids[i]]);
-            pos += 8 + d->len[ids[i]];
+            if (blob != NULL)
+                memcpy(s->buf + pos + 8, blob, w[1]);
+            pos += 8 + (blob != NULL ? w[1] : 0u);
             pe->sent[ids[i]] = 1;
         }
     for (i = 0; i < count; i++) {
@@ -198,8 +220,8 @@ static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot
         memset(&m, 0, sizeof m);
         m.a = ids[2 * i];
         m.b = ids[2 * i + 1];
-        m.config = games[from + i].config;
-        m.a_first = games[from + i].a_first;
+        m.config = matches != NULL ? matches[from + i].config : games[from + i].config;
+        m.a_first = matches != NULL ? matches[from + i].a_first : games[from + i].a_first;
         memcpy(s->buf + pos, &m, sizeof m);
         pos += sizeof m;
     }
@@ -252,13 +274,16 @@ static int duel_disp_poll(void *ud, duel_games *dg)
     size_t n;
     uint64_t batch;
     neat_game *games = duel_games_batch(dg, &n, &batch);
+    const duel_net *nets = NULL;
+    size_t n_nets = 0;
+    duel_match *matches = duel_games_batch_matches(dg, &nets, &n_nets);
     int k, flag;
     if (batch != d->batch) {
         d->batch = batch;
         d->seq++;
         duel_mpi_g.stats.batches++;
         duel_disp_reset(d, n);
-        if (d->hcap == 0)
+        if (d->hcap == 0 || (matches != NULL && (n_nets >= DUEL_MPI_MAX_NETS || duel_disp_room(d, n_nets) != 0)))
             return -1;
         for (k = 0; k < d->n_peers; k++)
             if (duel_disp_fill(d, dg, &d->peers[k]) != 0)
@@ -296,8 +321,12 @@ static int duel_disp_poll(void *ud, duel_games *dg)
             fprintf(stderr, "duel_evolve: mpi: rank %d answered another chunk than it was sent\n", st.MPI_SOURCE);
             return -1;
         }
-        for (i = 0; i < h.count; i++)
-            games[h.from + i].result = (int8_t)d->rbuf[sizeof h + i];
+        for (i = 0; i < h.count; i++) {
+            if (matches != NULL)
+                matches[h.from + i].result = (int8_t)d->rbuf[sizeof h + i];
+            else
+                games[h.from + i].result = (int8_t)d->rbuf[sizeof h + i];
+        }
         MPI_Wait(&pe->slot[0].req, MPI_STATUS_IGNORE);
         done = pe->slot[0];
         pe->slot[0] = pe->slot[1];

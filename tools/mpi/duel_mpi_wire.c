@@ -23,14 +23,26 @@ int duel_grow(void **p, size_t *cap, size_t need, size_t elem)
     return 0;
 }
 
+/* a network not sent in this batch: no blob, and no builtin's number */
+static void duel_wire_unsent(duel_net *n)
+{
+    n->blob = NULL;
+    n->len = SIZE_MAX;
+}
+
+static int duel_wire_sent(const duel_net *n)
+{
+    return n->blob != NULL || n->len != SIZE_MAX;
+}
+
 static void duel_wire_clear(duel_wire_store *s)
 {
     size_t i;
     for (i = 0; i < s->n_bufs; i++)
         free(s->bufs[i]);
     s->n_bufs = 0;
-    if (s->cap)
-        memset(s->nets, 0, s->cap * sizeof *s->nets);
+    for (i = 0; i < s->cap; i++)
+        duel_wire_unsent(&s->nets[i]);
 }
 
 void duel_wire_store_free(duel_wire_store *s)
@@ -61,13 +73,21 @@ static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, du
         if (len - pos < 8)
             return -1;
         memcpy(w, buf + pos, 8);
-        if (w[0] >= DUEL_MPI_MAX_NETS || w[1] > len - pos - 8)
+        if (w[0] >= DUEL_MPI_MAX_NETS ||
+            (w[1] < DUEL_WIRE_BUILTIN ? w[1] > len - pos - 8 : w[1] - DUEL_WIRE_BUILTIN >= DUEL_N_BUILTINS))
             return -1;
         if (w[0] >= s->cap) {
-            size_t old = s->cap;
+            size_t old = s->cap, k;
             if (duel_grow((void **)&s->nets, &s->cap, (size_t)w[0] + 1, sizeof *s->nets) != 0)
                 return -1;
-            memset(s->nets + old, 0, (s->cap - old) * sizeof *s->nets);
+            for (k = old; k < s->cap; k++)
+                duel_wire_unsent(&s->nets[k]);
+        }
+        if (w[1] >= DUEL_WIRE_BUILTIN) { /* a builtin strategy: its number, no bytes */
+            s->nets[w[0]].blob = NULL;
+            s->nets[w[0]].len = w[1] - DUEL_WIRE_BUILTIN;
+            pos += 8;
+            continue;
         }
         s->nets[w[0]].blob = buf + pos + 8;
         s->nets[w[0]].len = w[1];
@@ -80,7 +100,7 @@ static int duel_wire_work_parse(duel_wire_store *s, uint8_t *buf, size_t len, du
     for (i = 0; i < h->count; i++) {
         duel_wire_match w;
         memcpy(&w, buf + pos + i * sizeof w, sizeof w);
-        if (w.a >= s->cap || w.b >= s->cap || s->nets[w.a].blob == NULL || s->nets[w.b].blob == NULL)
+        if (w.a >= s->cap || w.b >= s->cap || !duel_wire_sent(&s->nets[w.a]) || !duel_wire_sent(&s->nets[w.b]))
             return -1;
         (*m)[i].a = w.a;
         (*m)[i].b = w.b;
@@ -104,10 +124,8 @@ int duel_wire_work_take(duel_wire_store *s, uint8_t *buf, size_t len, duel_work_
      * named before its error still pointing there) */
     for (i = 0; i < s->cap; i++)
         if (s->nets[i].blob != NULL && (uintptr_t)s->nets[i].blob >= (uintptr_t)buf &&
-            (uintptr_t)s->nets[i].blob < (uintptr_t)buf + len) {
-            s->nets[i].blob = NULL;
-            s->nets[i].len = 0;
-        }
+            (uintptr_t)s->nets[i].blob < (uintptr_t)buf + len)
+            duel_wire_unsent(&s->nets[i]);
     return -1;
 }
 

@@ -9,12 +9,14 @@
 
 /* Native byte order and layout: the start-up check (duel_mpi.c) makes sure
  * that every rank is the same build on the same byte order. A WORK message
- * is the header, then n_new times (uint32 id, uint32 length, the blob),
+ * is the header, then n_new times (uint32 id, uint32 length, the blob; a
+ * builtin strategy b as the length DUEL_WIRE_BUILTIN + b and no bytes),
  * then count duel_wire_match; a RESULT message is its header and count
  * bytes (int8 results). */
 #define DUEL_MPI_WORK_MAGIC 0x4b524f57u   /* "WORK" */
 #define DUEL_MPI_RESULT_MAGIC 0x544c5352u /* "RSLT" */
 #define DUEL_MPI_MAX_NETS (1u << 20)      /* networks a batch may name (a paper-scale batch names about 600) */
+#define DUEL_WIRE_BUILTIN 0xFFFFFF00u     /* a network's length DUEL_WIRE_BUILTIN + b: builtin strategy b, no bytes */
 
 typedef struct duel_work_hdr {
     uint32_t magic, count; /* count: games */
@@ -40,7 +42,7 @@ typedef struct duel_result_hdr {
 /* A rank's networks of the batch in flight, by id; the blobs point into the messages that brought them. */
 typedef struct duel_wire_store {
     uint64_t batch;
-    duel_net *nets;  /* [cap]; blob NULL: not sent */
+    duel_net *nets;  /* [cap]; a blob, a builtin (blob NULL, len its number), or not sent (blob NULL, len SIZE_MAX) */
     size_t cap;
     uint8_t **bufs;  /* the messages the blobs point into, freed when the batch changes */
     size_t n_bufs, bufs_cap;
