@@ -91,6 +91,16 @@ strength)
   # and a coevolution records the same series for its generation champions
   "$duel" run --config "$here/coev-small.ini" --out "$tmp/c" --generations 4 --quiet --set strength_every=2
   [ "$(cut -d, -f1 "$tmp/c/strength.csv" | tr '\n' ' ')" = "generation 0 2 " ] || fail "coevolution rows"
+  # an experiment's report gathers the runs' series (3 rows each: generations 0, 2, 4) and draws them
+  (cd "$here" && "$duel" experiment tiny-plan.ini --out "$tmp/e" --set strength_every=2 --quiet)
+  runs=$(tail -n +2 "$tmp/e/report/runs.csv" | wc -l)
+  [ "$(tail -n +2 "$tmp/e/report/strength.csv" | wc -l)" -eq $((3 * runs)) ] || fail "report/strength.csv"
+  if python3 -c 'import matplotlib' 2>/dev/null; then
+    [ -s "$tmp/e/report/strength.png" ] || fail "no strength figure"
+  fi
+  # and a report of runs without the series has none
+  (cd "$here" && "$duel" experiment tiny-plan.ini --out "$tmp/e2" --set generations=3 --quiet)
+  [ ! -e "$tmp/e2/report/strength.csv" ] || fail "a strength.csv without the series"
   ;;
 *)
   fail "unknown check $what"

@@ -547,6 +547,59 @@ static void rep_write_fig7(FILE *f, const void *ctx)
     }
 }
 
+/* The runs' strength.csv (a plan with strength_every): every row of every run that has one, after its method and
+ * run, into report/strength.csv; the file's header checked against the one duel_evolve writes. */
+typedef struct rep_strength {
+    FILE *f;
+    const rep *R;
+    const rep_run *r;
+    const char *path;
+    int bad, any;
+} rep_strength;
+
+static int rep_strength_line(void *ud, uint32_t line, char *text)
+{
+    rep_strength *x = (rep_strength *)ud;
+    char want[600];
+    size_t at;
+    int k;
+    if (line == 1) {
+        at = (size_t)snprintf(want, sizeof want, "generation");
+        for (k = 0; k < DUEL_N_BUILTINS; k++) {
+            const char *n = duel_builtin_name(k);
+            at += (size_t)snprintf(want + at, sizeof want - at, ",%s_wins,%s_losses,%s_draws,%s_timeouts", n, n, n, n);
+        }
+        if (strcmp(text, want) != 0) {
+            fprintf(stderr, "duel_evolve: experiment: %s:1: not a strength.csv of this version\n", x->path);
+            x->bad = 1;
+            return -1;
+        }
+        if (!x->any)
+            fprintf(x->f, "method,run,%s\n", want);
+        x->any = 1;
+        return 0;
+    }
+    fprintf(x->f, "%s,%u,%s\n", x->R->p->m[x->r->method].name, x->r->k, text);
+    return 0;
+}
+
+static void rep_write_strength(FILE *f, const void *ctx)
+{
+    rep_strength *x = (rep_strength *)(uintptr_t)ctx;
+    uint32_t k;
+    x->f = f;
+    for (k = 0; k < x->R->n_runs && !x->bad; k++) {
+        char path[600];
+        x->r = &x->R->runs[k];
+        snprintf(path, sizeof path, "%s/strength.csv", x->r->dir);
+        x->path = path;
+        if (access(path, F_OK) == 0 && rep_lines(path, rep_strength_line, x) != 0 && !x->bad) {
+            fprintf(stderr, "duel_evolve: experiment: %s: cannot read: %s\n", path, strerror(errno));
+            x->bad = 1;
+        }
+    }
+}
+
 /* Figure 7's dashed lines: the smallest and largest networks of the random-fitness runs' populations. */
 typedef struct rep_rand {
     double *sum;   /* [gmax][5]: runs, min conns, max conns, min hidden, max hidden */
@@ -792,6 +845,16 @@ int duel_exp_report_here(const duel_plan *p, const char *dir)
         rc |= rep_fig7_random(&R, "report/fig7-random.csv");
         rc |= duel_file_write_with("report/fig7-test.csv", rep_write_fig7_test, &R);
         rc |= duel_file_write_with("report/fig11-levels.csv", rep_write_fig11, &R);
+        {
+            /* the strength series, when the plan asked for it (strength_every): drawn beside Figure 7 */
+            rep_strength x;
+            memset(&x, 0, sizeof x);
+            x.R = &R;
+            rc |= duel_file_write_with("report/strength.csv", rep_write_strength, &x);
+            if (!x.any && !x.bad)
+                unlink("report/strength.csv");
+            rc |= x.bad;
+        }
         for (i = 0; i < p->n_methods; i++) {
             rep_levels_ctx c;
             char path[200];

@@ -132,6 +132,37 @@ def levels(d, table, method):
     save(fig, d, "levels-%s" % method)
 
 
+def strength(d, table):
+    """The runs' absolute strength over their generations (strength.csv: a plan with strength_every): per method,
+    the mean over its runs of the generation champion's (wins - losses) / games against forager-hunter and
+    against forager, beside Figure 7."""
+    path = os.path.join(d, "strength.csv")
+    if not os.path.exists(path):
+        return
+    data = rows(path)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4), sharey=True)
+    for ax, opp in zip(axes, ("forager-hunter", "forager")):
+        for m in table["methods"]:
+            by_gen = {}
+            for r in data:
+                if r["method"] != m["name"]:
+                    continue
+                games = sum(int(r[f"{opp}_{k}"]) for k in ("wins", "losses", "draws", "timeouts"))
+                margin = (int(r[f"{opp}_wins"]) - int(r[f"{opp}_losses"])) / games
+                by_gen.setdefault(int(r["generation"]), []).append(margin)
+            if by_gen:
+                gens = sorted(by_gen)
+                ax.plot(gens, [sum(by_gen[g]) / len(by_gen[g]) for g in gens], marker=".", label=m["name"])
+        ax.axhline(0, color="grey", linewidth=0.8)
+        ax.set_title(f"the generation champion against {opp}")
+        ax.set_xlabel("generation")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("(wins - losses) / 288, mean over runs")
+    axes[0].legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, d, "strength")
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: plot_experiment.py REPORT_DIR")
@@ -139,6 +170,7 @@ def main():
     with open(os.path.join(d, "table1.json")) as f:
         table = json.load(f)
     fig7(d, table)
+    strength(d, table)
     fig11(d, table)
     for m in table["methods"]:
         if m["name"] != table["reference"]:
