@@ -59,6 +59,19 @@ const char *duel_rules_name(const duel_rules *r)
 
 /* ---- checks ---- */
 
+/* the fields' byte offsets in the canonical bytes (below), for the decoder's messages */
+#define DUEL_OFF_RADIUS 8u
+#define DUEL_OFF_START (DUEL_OFF_RADIUS + 4u)
+#define DUEL_OFF_ENERGY (DUEL_OFF_START + 24u)
+#define DUEL_OFF_FOOD_ENERGY (DUEL_OFF_ENERGY + 4u)
+#define DUEL_OFF_EAT (DUEL_OFF_FOOD_ENERGY + 4u)
+#define DUEL_OFF_SHARE (DUEL_OFF_EAT + 4u)
+#define DUEL_OFF_TRAIN (DUEL_OFF_SHARE + 4u)
+#define DUEL_OFF_CAND (DUEL_OFF_TRAIN + 4u + 8u * DUEL_MAX_TRAIN_FOOD)
+#define DUEL_OFF_RANGES (DUEL_OFF_CAND + 8u * DUEL_CANDIDATES)
+#define DUEL_OFF_CRC (DUEL_OFF_RANGES + 8u)
+
+
 /* The limits: energies stay far inside int32 (start + 11 items at most
  * 10000 + 11 x 1000 units, less at most 1178 units of costs in 750 steps:
  * every energy, and every difference of two plus a scale, is below 2^31 in
@@ -87,18 +100,22 @@ static int duel_under_start(const duel_rules *r, int32_t x, int32_t y)
     return 0;
 }
 
-int duel_rules_check(const duel_rules *r, const char **field, const char **why)
+/* duel_rules_check, and the failing field's offset in the canonical bytes */
+static int duel_rules_check_at(const duel_rules *r, const char **field, const char **why, size_t *offset)
 {
     const char *f = NULL, *w = NULL;
+    size_t o = 0;
     int side;
     uint32_t i;
     if (r == NULL) {
         f = "rules";
+        o = 0;
         w = "no rules given";
         goto bad;
     }
     if (r->radius < DUEL_ONE || r->radius > DUEL_MAX_RADIUS) {
         f = "radius";
+        o = DUEL_OFF_RADIUS;
         w = "must be 1 to 100";
         goto bad;
     }
@@ -106,6 +123,7 @@ int duel_rules_check(const duel_rules *r, const char **field, const char **why)
         int32_t lo = r->radius, hi = Q(DUEL_BOARD) - r->radius;
         if (r->start_x[side] < lo || r->start_x[side] > hi || r->start_y[side] < lo || r->start_y[side] > hi) {
             f = side == 0 ? "start_west" : "start_east";
+            o = DUEL_OFF_START + 12u * (size_t)side;
             w = "the robot would start inside a wall (its centre must be at least radius from every edge)";
             goto bad;
         }
@@ -113,42 +131,50 @@ int duel_rules_check(const duel_rules *r, const char **field, const char **why)
     if (duel_dist2(r->start_x[0], r->start_y[0], r->start_x[1], r->start_y[1]) <
         (int64_t)Q(DUEL_COLLIDE_DIST) * Q(DUEL_COLLIDE_DIST)) {
         f = "start_east";
+        o = DUEL_OFF_START + 12u;
         w = "the robots would start within the collision distance 20 of each other";
         goto bad;
     }
     if (r->start_energy < DUEL_ONE || r->start_energy > DUEL_MAX_START_ENERGY) {
         f = "start_energy";
+        o = DUEL_OFF_ENERGY;
         w = "must be 1 to 10000";
         goto bad;
     }
     if (r->food_energy < 0 || r->food_energy > DUEL_MAX_FOOD_ENERGY) {
         f = "food_energy";
+        o = DUEL_OFF_FOOD_ENERGY;
         w = "must be 0 to 1000";
         goto bad;
     }
     if (r->eat_dist < DUEL_ONE || r->eat_dist > DUEL_MAX_EAT) {
         f = "eat_dist";
+        o = DUEL_OFF_EAT;
         w = "must be 1 to 150";
         goto bad;
     }
     if (r->share_dist < 0 || r->share_dist > r->eat_dist) {
         f = "share_dist";
+        o = DUEL_OFF_SHARE;
         w = "must be 0 to eat_dist";
         goto bad;
     }
     if (r->n_train > DUEL_MAX_TRAIN_FOOD) {
         f = "train_food";
+        o = DUEL_OFF_TRAIN;
         w = "more than 9 items (a comparison layout adds 2 to the 11 a world holds)";
         goto bad;
     }
     for (i = 0; i < r->n_train; i++) {
         if (!duel_on_board(r->train_x[i], r->train_y[i])) {
             f = "train_food";
+            o = DUEL_OFF_TRAIN;
             w = "an item off the board (x and y must be 0 to 600)";
             goto bad;
         }
         if (duel_under_start(r, r->train_x[i], r->train_y[i])) {
             f = "train_food";
+            o = DUEL_OFF_TRAIN;
             w = "an item within eat_dist of a robot's start";
             goto bad;
         }
@@ -156,33 +182,39 @@ int duel_rules_check(const duel_rules *r, const char **field, const char **why)
     for (i = 0; i < DUEL_CANDIDATES; i++) {
         if (!duel_on_board(r->cand_x[i], r->cand_y[i])) {
             f = "candidates";
+            o = DUEL_OFF_CAND;
             w = "a position off the board (x and y must be 0 to 600)";
             goto bad;
         }
         if (duel_under_start(r, r->cand_x[i], r->cand_y[i]) ||
             duel_under_start(r, Q(DUEL_BOARD) - r->cand_x[i], r->cand_y[i])) {
             f = "candidates";
+            o = DUEL_OFF_CAND;
             w = "a position (or its mirror) within eat_dist of a robot's start";
             goto bad;
         }
     }
     if (r->food_range == 0) {
         f = "food_range";
+        o = DUEL_OFF_RANGES;
         w = "must be 1 to 65535";
         goto bad;
     }
     if (r->robot_range == 0) {
         f = "robot_range";
+        o = DUEL_OFF_RANGES + 2u;
         w = "must be 1 to 65535";
         goto bad;
     }
     if (r->energy_scale == 0) {
         f = "energy_scale";
+        o = DUEL_OFF_RANGES + 4u;
         w = "must be 1 to 65535";
         goto bad;
     }
     if (r->wall_range == 0) {
         f = "wall_range";
+        o = DUEL_OFF_RANGES + 6u;
         w = "must be 1 to 65535";
         goto bad;
     }
@@ -192,7 +224,14 @@ bad:
         *field = f;
     if (why != NULL)
         *why = w;
+    if (offset != NULL)
+        *offset = o;
     return DUEL_E_RULES;
+}
+
+int duel_rules_check(const duel_rules *r, const char **field, const char **why)
+{
+    return duel_rules_check_at(r, field, why, NULL);
 }
 
 /* ---- canonical bytes ----
@@ -227,17 +266,6 @@ static uint16_t duel_get16(const uint8_t *p)
     return (uint16_t)(p[0] | p[1] << 8);
 }
 
-/* the fields' byte offsets, for the decoder's messages */
-#define DUEL_OFF_RADIUS 8u
-#define DUEL_OFF_START (DUEL_OFF_RADIUS + 4u)
-#define DUEL_OFF_ENERGY (DUEL_OFF_START + 24u)
-#define DUEL_OFF_FOOD_ENERGY (DUEL_OFF_ENERGY + 4u)
-#define DUEL_OFF_EAT (DUEL_OFF_FOOD_ENERGY + 4u)
-#define DUEL_OFF_SHARE (DUEL_OFF_EAT + 4u)
-#define DUEL_OFF_TRAIN (DUEL_OFF_SHARE + 4u)
-#define DUEL_OFF_CAND (DUEL_OFF_TRAIN + 4u + 8u * DUEL_MAX_TRAIN_FOOD)
-#define DUEL_OFF_RANGES (DUEL_OFF_CAND + 8u * DUEL_CANDIDATES)
-#define DUEL_OFF_CRC (DUEL_OFF_RANGES + 8u)
 typedef char duel_rules_bytes_check[DUEL_OFF_CRC + 4u == DUEL_RULES_BYTES ? 1 : -1];
 
 int duel_rules_encode(const duel_rules *r, uint8_t out[DUEL_RULES_BYTES])
@@ -277,32 +305,6 @@ int duel_rules_encode(const duel_rules *r, uint8_t out[DUEL_RULES_BYTES])
     return DUEL_OK;
 }
 
-/* the byte offset of the field duel_rules_check names */
-static size_t duel_field_offset(const char *field)
-{
-    static const struct {
-        const char *name;
-        size_t off;
-    } offs[] = {{"radius", DUEL_OFF_RADIUS},
-                {"start_west", DUEL_OFF_START},
-                {"start_east", DUEL_OFF_START + 12u},
-                {"start_energy", DUEL_OFF_ENERGY},
-                {"food_energy", DUEL_OFF_FOOD_ENERGY},
-                {"eat_dist", DUEL_OFF_EAT},
-                {"share_dist", DUEL_OFF_SHARE},
-                {"train_food", DUEL_OFF_TRAIN},
-                {"candidates", DUEL_OFF_CAND},
-                {"food_range", DUEL_OFF_RANGES},
-                {"robot_range", DUEL_OFF_RANGES + 2u},
-                {"energy_scale", DUEL_OFF_RANGES + 4u},
-                {"wall_range", DUEL_OFF_RANGES + 6u}};
-    size_t i;
-    for (i = 0; field != NULL && i < sizeof offs / sizeof offs[0]; i++)
-        if (strcmp(field, offs[i].name) == 0)
-            return offs[i].off;
-    return 0;
-}
-
 int duel_rules_decode(duel_rules *r, const uint8_t *bytes, size_t len, size_t *offset)
 {
     const uint8_t *p;
@@ -314,7 +316,7 @@ int duel_rules_decode(duel_rules *r, const uint8_t *bytes, size_t len, size_t *o
     if (r == NULL || bytes == NULL)
         return DUEL_E_ARG;
     /* nothing is read past what was given: the size first */
-    if (len < 8u || memcmp(bytes, "DRUL", 4) != 0)
+    if (len < 8u || bytes[0] != 'D' || bytes[1] != 'R' || bytes[2] != 'U' || bytes[3] != 'L')
         goto fail;
     bad = 4;
     if (duel_get16(bytes + 4) != DUEL_RULES_VERSION)
@@ -359,10 +361,8 @@ int duel_rules_decode(duel_rules *r, const uint8_t *bytes, size_t len, size_t *o
     got.robot_range = duel_get16(p + 2);
     got.energy_scale = duel_get16(p + 4);
     got.wall_range = duel_get16(p + 6);
-    if (duel_rules_check(&got, &field, NULL) != DUEL_OK) {
-        bad = duel_field_offset(field);
+    if (duel_rules_check_at(&got, &field, NULL, &bad) != DUEL_OK)
         goto fail;
-    }
     *r = got;
     return DUEL_OK;
 fail:

@@ -3,7 +3,8 @@
 #   fw.sh build MACHINE DIR DUEL_EVOLVE A.blob B.blob [CORRUPT_OFFSET]
 #       the runtime and duelsim, the documented NEAT_RUNTIME_ONLY build, in DIR/lib; the images
 #       DIR/fw/duels.elf and DIR/fw/figures.elf with A and B exported by DUEL_EVOLVE; with
-#       CORRUPT_OFFSET, duels.elf links B with that byte corrupted. FW_CPU overrides the core.
+#       CORRUPT_OFFSET, duels.elf links B with that byte corrupted. FW_CPU overrides the core; FW_WORLD (a
+#       world's name or an INI file with a [world] section) makes duels.elf play in that world.
 #   fw.sh run MACHINE ELF OUT [--icount]
 #       the image under QEMU (60 s limit), the semihosting output in OUT; exits with the
 #       firmware's status (QEMU passes SYS_EXIT_EXTENDED's on), 124 on timeout.
@@ -66,7 +67,8 @@ build)
   quiet ninja -C "$dir/lib"
   quiet cmake -S "$here" -B "$dir/fw" -G Ninja "${toolchain[@]}" -DCMAKE_BUILD_TYPE=MinSizeRel \
     -DFW_MACHINE="$mach" -DNEAT_LIB_DIR="$dir/lib" -DNEAT_DUEL_EVOLVE="$(realpath "$duel")" \
-    -DFW_CHAMPION_A="$(realpath "$a")" -DFW_CHAMPION_B="$(realpath "$b")" -DFW_CORRUPT_B="$corrupt"
+    -DFW_CHAMPION_A="$(realpath "$a")" -DFW_CHAMPION_B="$(realpath "$b")" -DFW_CORRUPT_B="$corrupt" \
+    -DFW_WORLD="${FW_WORLD:-}"
   quiet ninja -C "$dir/fw"
   ;;
 run)

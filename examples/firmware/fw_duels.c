@@ -232,9 +232,12 @@ static const char *fw_outcome_text(int outcome)
     }
 }
 
-int fw_duels_run(const uint8_t *const blob[2], const size_t blob_len[2], void *arena, size_t arena_len,
-                 fw_write_fn write, void *ud)
+int fw_duels_run(const uint8_t *const blob[2], const size_t blob_len[2], const uint8_t *world, size_t world_len,
+                 void *arena, size_t arena_len, fw_write_fn write, void *ud)
 {
+#ifdef FW_WORLD
+    duel_rules rules;
+#endif
     nrt_net net[2];
     duel_controller builtin[DUEL_N_BUILTINS], champ[2];
     fw_hash h;
@@ -244,8 +247,30 @@ int fw_duels_run(const uint8_t *const blob[2], const size_t blob_len[2], void *a
     int g, i, rc;
 
     l.n = 0;
-    fw_line_str(&l, "neat-duel firmware duels: duel spec v");
-    fw_line_udec(&l, DUEL_SPEC_VERSION);
+#ifdef FW_WORLD
+    if (world != NULL) {
+        size_t off = 0;
+        uint64_t id;
+        if (duel_rules_decode(&rules, world, world_len, &off) != DUEL_OK) {
+            fw_line_str(&l, "world rules refused at byte ");
+            fw_line_udec(&l, (uint32_t)off);
+            fw_line_end(&l, write, ud);
+            return FW_EXIT_REFUSED;
+        }
+        id = duel_rules_id(&rules);
+        fw_line_str(&l, "neat-duel firmware duels: world ");
+        fw_line_hex32(&l, (uint32_t)(id >> 32));
+        fw_line_hex32(&l, (uint32_t)id);
+    } else
+#else
+    /* world v1 only: a build without FW_WORLD links none of the rules' decoding */
+    (void)world;
+    (void)world_len;
+#endif
+    {
+        fw_line_str(&l, "neat-duel firmware duels: duel spec v");
+        fw_line_udec(&l, DUEL_SPEC_VERSION);
+    }
     fw_line_str(&l, ", runtime ");
     fw_line_udec(&l, NRT_VERSION_MAJOR);
     fw_line_char(&l, '.');
@@ -275,7 +300,12 @@ int fw_duels_run(const uint8_t *const blob[2], const size_t blob_len[2], void *a
         cw = west < FW_BUILTIN ? &champ[west] : &builtin[west - FW_BUILTIN];
         ce = east < FW_BUILTIN ? &champ[east] : &builtin[east - FW_BUILTIN];
         h.game = FW_FNV_BASIS;
+#ifdef FW_WORLD
+        err = world != NULL ? duel_play_rules(&rules, cw, ce, food, &r, fw_hash_trace, &h)
+                            : duel_play(cw, ce, food, &r, fw_hash_trace, &h);
+#else
         err = duel_play(cw, ce, food, &r, fw_hash_trace, &h);
+#endif
 
         fw_line_str(&l, "game ");
         fw_line_udec_pad(&l, (uint32_t)g + 1u, 2);

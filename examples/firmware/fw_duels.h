@@ -40,10 +40,12 @@ typedef void (*fw_write_fn)(void *ud, const char *s, size_t n);
  * their summary lines, plays the games and prints one line per game and a
  * summary. A champion the runtime refuses (its nrt_error printed), one that
  * is not a 13-input 3-output duel network, or one that does not fit in the
- * arena ends the run. Returns FW_EXIT_OK, FW_EXIT_REFUSED or FW_EXIT_FAILED
- * (fw_port.h). */
-int fw_duels_run(const uint8_t *const blob[2], const size_t blob_len[2], void *arena, size_t arena_len,
-                 fw_write_fn write, void *ud);
+ * arena ends the run. The games are world v1's (world NULL), or those of
+ * the world whose canonical bytes world holds (duel_evolve export --world;
+ * rules that duel_rules_decode refuses end the run as a refused champion
+ * does). Returns FW_EXIT_OK, FW_EXIT_REFUSED or FW_EXIT_FAILED (fw_port.h). */
+int fw_duels_run(const uint8_t *const blob[2], const size_t blob_len[2], const uint8_t *world, size_t world_len,
+                 void *arena, size_t arena_len, fw_write_fn write, void *ud);
 
 /* ---- the line builder, shared with fw_figures.c ---- */
 #define FW_LINE_MAX 200

@@ -7,6 +7,11 @@ extern const uint8_t fw_champion_a[];
 extern const size_t fw_champion_a_len;
 extern const uint8_t fw_champion_b[];
 extern const size_t fw_champion_b_len;
+#ifdef FW_WORLD
+/* the world's rules, by `duel_evolve export --world SPEC --c-array fw_world` (CMake's FW_WORLD) */
+extern const uint8_t fw_world[];
+extern const size_t fw_world_len;
+#endif
 
 int main(void);
 
@@ -23,5 +28,9 @@ int main(void)
     const uint8_t *const blob[2] = {fw_champion_a, fw_champion_b};
     const size_t len[2] = {fw_champion_a_len, fw_champion_b_len};
 
-    return fw_duels_run(blob, len, arena, sizeof arena, fw_write, NULL);
+#ifdef FW_WORLD
+    return fw_duels_run(blob, len, fw_world, fw_world_len, arena, sizeof arena, fw_write, NULL);
+#else
+    return fw_duels_run(blob, len, NULL, 0, arena, sizeof arena, fw_write, NULL);
+#endif
 }

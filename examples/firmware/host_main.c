@@ -42,20 +42,23 @@ static uint8_t *fw_host_read(const char *path, size_t *len)
 int main(int argc, char **argv)
 {
     static uint8_t arena[FW_ARENA]; /* the target's size, so memory refusals match too */
-    uint8_t *blob[2] = {NULL, NULL};
-    size_t len[2] = {0, 0};
+    uint8_t *blob[2] = {NULL, NULL}, *world = NULL;
+    size_t len[2] = {0, 0}, world_len = 0;
     int rc = FW_HOST_EXIT_USAGE;
 
-    if (argc != 3) {
-        fprintf(stderr, "usage: fw_duels_host A.blob B.blob\n"
-                        "Plays the firmware example's games (examples/firmware) on this machine.\n");
+    if (argc != 3 && argc != 4) {
+        fprintf(stderr, "usage: fw_duels_host A.blob B.blob [WORLD.bin]\n"
+                        "Plays the firmware example's games (examples/firmware) on this machine, in world v1 or in\n"
+                        "the world whose rules WORLD.bin holds (duel_evolve export --world SPEC --raw -o WORLD.bin).\n");
         return FW_HOST_EXIT_USAGE;
     }
+    if (argc == 4 && (world = fw_host_read(argv[3], &world_len)) == NULL)
+        return FW_HOST_EXIT_USAGE;
     blob[0] = fw_host_read(argv[1], &len[0]);
     blob[1] = blob[0] != NULL ? fw_host_read(argv[2], &len[1]) : NULL;
     if (blob[1] != NULL) {
         const uint8_t *const cb[2] = {blob[0], blob[1]};
-        rc = fw_duels_run(cb, len, arena, sizeof arena, fw_host_write, stdout);
+        rc = fw_duels_run(cb, len, world, world_len, arena, sizeof arena, fw_host_write, stdout);
         if (fflush(stdout) != 0 || ferror(stdout)) {
             fprintf(stderr, "fw_duels_host: cannot write the output\n");
             rc = FW_HOST_EXIT_USAGE;
@@ -63,5 +66,6 @@ int main(int argc, char **argv)
     }
     free(blob[0]);
     free(blob[1]);
+    free(world);
     return rc;
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# qemu_identity.sh MACHINE|refused FW_SH DUEL_EVOLVE FW_HOST BLOBS WORK - the firmware example built for a QEMU machine prints, byte for byte, what its host twin prints; "refused": a corrupted champion linked into the image is refused with its error code, the same on both. Exit 77 (skipped) without the cross compiler or QEMU.
+# qemu_identity.sh MACHINE|refused|world FW_SH DUEL_EVOLVE FW_HOST BLOBS WORK - the firmware example built for a QEMU machine prints, byte for byte, what its host twin prints; "refused": a corrupted champion linked into the image is refused with its error code, the same on both; "world": an image built for a world other than v1 (FW_WORLD) plays that world's games, as the host twin does. Exit 77 (skipped) without the cross compiler or QEMU.
 set -euo pipefail
 what=$1 fw=$2 duel=$3 host=$4 blobs=$5 work=$6
 a=$blobs/champion.blob # evolved: 5 generations of tests/tools/coev-small.ini
@@ -13,7 +13,7 @@ need() {
 }
 
 machine=$what
-[ "$what" = refused ] && machine=microbit
+[ "$what" = refused ] || [ "$what" = world ] && machine=microbit
 case "$machine" in
 sifive_e) need riscv64-unknown-elf-gcc qemu-system-riscv32 ;;
 *) need arm-none-eabi-gcc qemu-system-arm ;;
@@ -27,6 +27,38 @@ same_output() {
     fail "$machine prints something else than the host (above: < host, > target)"
   fi
 }
+
+if [ "$what" = world ]; then
+  # every chosen rule other than v1's: starts, energies, food, eating, ranges
+  cat > "$work/world.ini" <<'INI'
+[world]
+radius = 12.5
+start_west = 80 120 90
+start_east = 520 480 -45
+start_energy = 900
+food_energy = 150
+eat_dist = 18
+share_dist = 3
+train_food = 150 150, 300 300, 450 450, 300 120, 210 500, 580 300
+food_range = 250
+robot_range = 400
+energy_scale = 90
+wall_range = 120
+INI
+  "$duel" export --world "$work/world.ini" --raw -o "$work/world.bin"
+  FW_WORLD="$work/world.ini" "$fw" build "$machine" "$work" "$duel" "$a" "$b"
+  "$host" "$a" "$b" "$work/world.bin" > "$work/host.txt" || fail "host: exit $?"
+  "$host" "$a" "$b" > "$work/host-v1.txt" || fail "host (v1): exit $?"
+  rc=0
+  "$fw" run "$machine" "$work/fw/duels.elf" "$work/target.txt" || rc=$?
+  [ "$rc" -eq 0 ] || { cat "$work/target.txt"; fail "$machine: exit $rc (124: timeout)"; }
+  same_output "$work/host.txt" "$work/target.txt"
+  id=$("$duel" config --dump --config "$work/world.ini" | sed -n 's/.*(identity \([0-9a-f]*\)).*/\1/p')
+  head -1 "$work/target.txt" | grep -q "world 0x${id:0:8}0x${id:8:8}" || fail "the image does not name the world $id"
+  ! cmp -s <(tail -n +2 "$work/host.txt") <(tail -n +2 "$work/host-v1.txt") || fail "the world's games are v1's"
+  echo "$machine in world $id: identical to the host: $(tail -1 "$work/target.txt")"
+  exit 0
+fi
 
 if [ "$what" != refused ]; then
   [ "$("$duel" inspect "$b" | sed -n 's/^recurrent: \([0-9]*\).*/\1/p')" -gt 0 ] || fail "$b: no recurrent connection"
