@@ -13,11 +13,13 @@
 #include "duel_files.h"
 #include "duel_render.h"
 #include "duel_replay.h"
+#include "duel_world_cfg.h"
 
 #define DUEL_RC_PATH 4096
 
 static const char duel_render_usage_line[] =
-    "usage: duel_evolve render (LOG.lcm | A B [--food K|training] [--side west|east]) --out DIR [--size 600] "
+    "usage: duel_evolve render (LOG.lcm | A B [--food K|training] [--side west|east] [--world NAME|FILE]) --out DIR "
+    "[--size 600] "
     "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30]\n";
 
 /* "--opt N" with lo <= N <= hi. 0, or -1 after one line on stderr. */
@@ -98,7 +100,8 @@ static int duel_rc_read_log(duel_replay *rep, const char *path)
 }
 
 /* The game between the controllers specs a and b, a starting west or east. */
-static int duel_rc_play(duel_replay *rep, const char *a_spec, const char *b_spec, int food, int a_west)
+static int duel_rc_play(duel_replay *rep, const duel_rules *world, const char *a_spec, const char *b_spec, int food,
+                        int a_west)
 {
     duel_cli_ctrl a, b;
     int err;
@@ -108,7 +111,8 @@ static int duel_rc_play(duel_replay *rep, const char *a_spec, const char *b_spec
         duel_cli_ctrl_close(&a);
         return -1;
     }
-    err = a_west ? duel_replay_from_game(rep, &a.ctrl, &b.ctrl, food) : duel_replay_from_game(rep, &b.ctrl, &a.ctrl, food);
+    err = a_west ? duel_replay_from_game_rules(rep, world, &a.ctrl, &b.ctrl, food)
+                 : duel_replay_from_game_rules(rep, world, &b.ctrl, &a.ctrl, food);
     snprintf(rep->west, sizeof rep->west, "%s", a_west ? a.name : b.name);
     snprintf(rep->east, sizeof rep->east, "%s", a_west ? b.name : a.name);
     duel_cli_ctrl_close(&a);
@@ -188,7 +192,9 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
 
 int duel_cmd_render(int argc, char **argv)
 {
-    const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL;
+    const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL, *world_arg = NULL;
+    duel_rules world = *duel_rules_v1();
+    int found = 0;
     char video_target[DUEL_RC_PATH];
     char ffmpeg[DUEL_RC_PATH], path[DUEL_RC_PATH], err[512], suffix[64];
     int i, n_pos = 0, size = 600, every = 1, fps = 30, food = DUEL_TRAINING, a_west = 1, game_opts = 0, rc = 0;
@@ -223,7 +229,7 @@ int duel_cmd_render(int argc, char **argv)
         }
         if (i + 1 >= argc) {
             static const char *const takes[] = {"--out", "--video", "--size", "--every", "--fps", "--food", "--side",
-                                                NULL};
+                                                "--world", NULL};
             return duel_cli_missing_value("render", opt, takes);
         }
         if (strcmp(opt, "--out") == 0) {
@@ -245,6 +251,9 @@ int duel_cmd_render(int argc, char **argv)
                 food = DUEL_TRAINING;
             else if (duel_rc_int("render", opt, argv[i], 0, DUEL_CONFIGS - 1, &food) != 0)
                 return 2;
+        } else if (strcmp(opt, "--world") == 0) {
+            world_arg = argv[++i];
+            game_opts = 1;
         } else if (strcmp(opt, "--side") == 0) {
             const char *v = argv[++i];
             game_opts = 1;
@@ -263,9 +272,13 @@ int duel_cmd_render(int argc, char **argv)
         return 2;
     }
     if (n_pos == 1 && game_opts) {
-        fprintf(stderr, "duel_evolve: render: --food and --side choose a game to play, not one in a log\n");
+        fprintf(stderr, "duel_evolve: render: --food, --side and --world choose a game to play, not one in a log\n");
         return 2;
     }
+    /* a game to play is played in --world's world, else in that of the runs its champions come from, else v1 */
+    if (n_pos == 2 && (world_arg != NULL ? duel_world_arg(&world, world_arg) != 0
+                                         : duel_ctrl_world((const char *const *)pos, 2, &world, &found) != 0))
+        return 2;
     /* everything that can be checked before the game is played and drawn */
     if (video != NULL) {
         if (duel_exec_find("ffmpeg", ffmpeg, sizeof ffmpeg) != 0) {
@@ -283,7 +296,7 @@ int duel_cmd_render(int argc, char **argv)
     }
     /* the game, then the directory: bad input leaves nothing behind */
     duel_replay_init(&rep);
-    if (n_pos == 1 ? duel_rc_read_log(&rep, pos[0]) : duel_rc_play(&rep, pos[0], pos[1], food, a_west)) {
+    if (n_pos == 1 ? duel_rc_read_log(&rep, pos[0]) : duel_rc_play(&rep, &world, pos[0], pos[1], food, a_west)) {
         duel_replay_free(&rep);
         return 2;
     }

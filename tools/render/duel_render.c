@@ -245,11 +245,11 @@ static double duel_rd_clamp01(double v)
  * colour growing from the outer end (west: left, east: right), a tick at the
  * start energy; its number beside it, on the inner side. Full scale: the
  * start energy plus every food item. */
-static void duel_rd_energy_bar(const duel_render_geom *g, int side, double energy, double full)
+static void duel_rd_energy_bar(const duel_render_geom *g, int side, double energy, double full, double start)
 {
     double x0 = g->bar_x0[side], x1 = g->bar_x1[side], y0 = g->bar_y0, y1 = g->bar_y1, inset = 1.0;
     double in0 = x0 + inset, in1 = x1 - inset, fill = (in1 - in0) * duel_rd_clamp01(energy / full);
-    double tick = (in1 - in0) * DUEL_START_ENERGY / full, cy = (y0 + y1) / 2;
+    double tick = (in1 - in0) * start / full, cy = (y0 + y1) / 2;
     char num[16];
     duel_rd_colour(DUEL_RGB_BAR_EDGE);
     duel_rd_rect(x0, y0, x1, y1);
@@ -308,9 +308,9 @@ static void duel_rd_legend(const duel_render_geom *g, const char *west, const ch
 
 /* Each robot's path so far: a stroke through its centres in frames
  * 0..n-1, in its colour half way to the board's, under the robots. */
-static void duel_rd_trails(const duel_render *r, const duel_frame *trail, size_t n, double k)
+static void duel_rd_trails(const duel_render *r, const duel_frame *trail, size_t n, double rad)
 {
-    double wd = 0.25 * DUEL_RADIUS * k;
+    double wd = 0.25 * rad;
     size_t i;
     int side;
     if (wd < 1)
@@ -343,7 +343,7 @@ static double duel_rd_heading(duel_angle a)
 /* The five rangefinder sector boundaries, at heading + (2k+1) * 36 degrees,
  * from the robot's rim to the board's edge (the scissor), the robot's colour
  * at 40 % over the board. */
-static void duel_rd_sensors(const duel_render *r, const duel_robot *rb, uint32_t colour, double k)
+static void duel_rd_sensors(const duel_render *r, const duel_robot *rb, uint32_t colour, double k, double rad)
 {
     double px, py, a0 = duel_rd_heading(rb->heading), reach = 900 * k;
     int i;
@@ -351,16 +351,16 @@ static void duel_rd_sensors(const duel_render *r, const duel_robot *rb, uint32_t
     glColor4ub((GLubyte)(colour >> 16), (GLubyte)(colour >> 8), (GLubyte)colour, 128);
     for (i = 0; i < 5; i++) {
         double a = a0 + (2 * i + 1) * duel_rd_pi / 5, c = cos(a), s = -sin(a); /* y down */
-        duel_rd_stroke(px + c * DUEL_RADIUS * k, py + s * DUEL_RADIUS * k, px + c * reach, py + s * reach, 1.0);
+        duel_rd_stroke(px + c * rad, py + s * rad, px + c * reach, py + s * reach, 1.0);
     }
 }
 
-/* A robot: a disc of radius 10 units with a dark outline, and a white
- * triangle pointing along the heading that leaves the centre in the robot's
- * colour. */
-static void duel_rd_robot(const duel_render *r, const duel_robot *rb, uint32_t colour, double k)
+/* A robot: a disc of the world's radius (rad pixels: 10 units in v1) with
+ * a dark outline, and a white triangle pointing along the heading that
+ * leaves the centre in the robot's colour. */
+static void duel_rd_robot(const duel_render *r, const duel_robot *rb, uint32_t colour, double rad)
 {
-    double px, py, a = duel_rd_heading(rb->heading), c = cos(a), s = -sin(a), rad = DUEL_RADIUS * k;
+    double px, py, a = duel_rd_heading(rb->heading), c = cos(a), s = -sin(a);
     double outline = 0.1 * rad < 0.75 ? 0.75 : 0.1 * rad;
     duel_render_to_pixel(r->size, rb->x / 65536.0, rb->y / 65536.0, &px, &py);
     duel_rd_colour(DUEL_RGB_OUTLINE);
@@ -405,7 +405,10 @@ void duel_render_frame_info(duel_render *r, const duel_frame *f, unsigned flags,
     duel_rd_layout l = duel_rd_layout_of(r->size);
     duel_render_geom g;
     int w = r->size * DUEL_RENDER_SS, side, i;
-    double k = (double)l.b / DUEL_BOARD, full = DUEL_START_ENERGY + DUEL_FOOD_ENERGY * (double)f->w.n_food;
+    /* the frame's world: its robots' size, start energy and food (v1 for a world without rules) */
+    const duel_rules *rules = f->w.rules != NULL ? f->w.rules : duel_rules_v1();
+    double k = (double)l.b / DUEL_BOARD, start = rules->start_energy / 65536.0;
+    double full = start + rules->food_energy / 65536.0 * (double)f->w.n_food, robot = rules->radius / 65536.0 * k;
     char line[96];
 
     duel_render_geom_of(r->size, &g);
@@ -429,7 +432,7 @@ void duel_render_frame_info(duel_render *r, const duel_frame *f, unsigned flags,
     duel_rd_rect(l.ox, l.hud, l.ox + l.b, l.hud + l.b);
 
     if ((flags & DUEL_RENDER_TRAILS) && info != NULL && info->trail != NULL)
-        duel_rd_trails(r, info->trail, info->n_trail, k);
+        duel_rd_trails(r, info->trail, info->n_trail, robot);
 
     duel_rd_colour(DUEL_RGB_FOOD);
     for (i = 0; i < f->w.n_food && i < DUEL_MAX_FOOD; i++)
@@ -445,18 +448,18 @@ void duel_render_frame_info(duel_render *r, const duel_frame *f, unsigned flags,
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         for (side = 0; side < 2; side++)
-            duel_rd_sensors(r, &f->w.robot[side], side == DUEL_WEST ? DUEL_RGB_WEST : DUEL_RGB_EAST, k);
+            duel_rd_sensors(r, &f->w.robot[side], side == DUEL_WEST ? DUEL_RGB_WEST : DUEL_RGB_EAST, k, robot);
         glDisable(GL_BLEND);
         glDisable(GL_SCISSOR_TEST);
     }
     for (side = 0; side < 2; side++)
-        duel_rd_robot(r, &f->w.robot[side], side == DUEL_WEST ? DUEL_RGB_WEST : DUEL_RGB_EAST, k);
+        duel_rd_robot(r, &f->w.robot[side], side == DUEL_WEST ? DUEL_RGB_WEST : DUEL_RGB_EAST, robot);
 
     /* the top strip: legend, bars with their numbers, the step */
     if (info != NULL && info->west != NULL && info->east != NULL)
         duel_rd_legend(&g, info->west, info->east);
     for (side = 0; side < 2; side++)
-        duel_rd_energy_bar(&g, side, f->w.robot[side].energy / 65536.0, full);
+        duel_rd_energy_bar(&g, side, f->w.robot[side].energy / 65536.0, full, start);
     duel_rd_colour(DUEL_RGB_TEXT);
     snprintf(line, sizeof line, "step %u", (unsigned)f->t);
     duel_rd_text_at(line, r->size / 2.0, (g.bar_y0 + g.bar_y1) / 2, 0, g.dot);

@@ -72,6 +72,12 @@ static void duel_replay_trace(void *ud, const duel_world *w, const nrt_q15 in[2]
 
 int duel_replay_from_game(duel_replay *r, duel_controller *west, duel_controller *east, int food_config)
 {
+    return duel_replay_from_game_rules(r, NULL, west, east, food_config);
+}
+
+int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_controller *west, duel_controller *east,
+                                int food_config)
+{
     duel_replay_rec rec;
     duel_result res;
     duel_frame *last, *fin;
@@ -81,7 +87,7 @@ int duel_replay_from_game(duel_replay *r, duel_controller *west, duel_controller
     r->food_config = food_config;
     rec.r = r;
     rec.err = 0;
-    err = duel_play(west, east, food_config, &res, duel_replay_trace, &rec);
+    err = duel_play_rules(rules, west, east, food_config, &res, duel_replay_trace, &rec);
     if (!err)
         err = rec.err;
     if (!err)

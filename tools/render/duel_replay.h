@@ -33,6 +33,10 @@ int duel_replay_push(duel_replay *r, const duel_frame *f);
 /* Plays west against east on food_config and records every frame
  * (tools/duel_replay.c). 0, or a negative duel_error / -ENOMEM. */
 int duel_replay_from_game(duel_replay *r, duel_controller *west, duel_controller *east, int food_config);
+/* The same in the world of rules (NULL: v1), which the frames' worlds point
+ * at: they must outlive the frames' use. */
+int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_controller *west, duel_controller *east,
+                                int food_config);
 
 /* Reads the frames of a game recorded as an LCM event log (`play
  * --lcm-log`, tools/duel_lcm_log.c). 0, or -1 with one line in err naming
