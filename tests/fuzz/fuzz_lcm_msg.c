@@ -61,6 +61,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         duel_motor_t_decode_cleanup(&m);
     if (duel_msg_decode_state(data + 1, size - 1, &st, msg, sizeof msg) == DUEL_NODE_OK)
         duel_state_t_decode_cleanup(&st);
+    {
+        /* the world message: accepted only with rules that make a game and their identity */
+        duel_rules r;
+        if (duel_msg_decode_world(data + 1, size - 1, &r, msg, sizeof msg) == DUEL_NODE_OK &&
+            duel_rules_check(&r, NULL, NULL) != DUEL_OK)
+            __builtin_trap();
+    }
     /* as the nodes receive it: the first byte picks the channel; protocol errors are forgotten so that every
      * input reaches the handlers */
     fm_ctrl.err = 0;

@@ -174,6 +174,26 @@ processes)
       echo "food $food: $1 vs $2, $steps steps over tcpq in $((t1 - t0)) ms, states identical to play"
     done
   done
+  # a world other than v1: the world node publishes its rules first, the log carries them, every reader takes
+  # the states in that world, and the game is play --world's bit for bit
+  printf '[world]\nradius = 12.5\nstart_west = 80 120 90\nstart_energy = 900\ntrain_food = 150 150, 300 300\nfood_range = 250\nwall_range = 120\n' > "$tmp/world.ini"
+  "$duel" node controller "$tmp/champ.blob" --side west --lcm "$url" > "$tmp/cw.txt" 2>&1 & cw=$!
+  "$duel" node controller "$tmp/net39a.blob" --side east --lcm "$url" > "$tmp/ce.txt" 2>&1 & ce=$!
+  pids+=("$cw" "$ce")
+  "$duel" node world --food 17 --world "$tmp/world.ini" --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms 2000 \
+    > "$tmp/world.txt" || fail "world: $(cat "$tmp/world.txt")"
+  wait "$cw" || fail "west controller: $(cat "$tmp/cw.txt")"
+  wait "$ce" || fail "east controller: $(cat "$tmp/ce.txt")"
+  "$duel" play "$tmp/champ.blob" "$tmp/net39a.blob" --food 17 --world "$tmp/world.ini" --trace "$tmp/p.csv" \
+    --lcm-log "$tmp/p.lcm" > "$tmp/play.txt"
+  cmp "$tmp/world.txt" "$tmp/play.txt" || fail "world and play print different games in the world"
+  "$duel" log dump "$tmp/w.lcm" > "$tmp/w.csv"
+  cmp "$tmp/p.csv" "$tmp/w.csv" || fail "the three-process game in the world differs from play --trace"
+  "$duel" log info "$tmp/w.lcm" | grep -q "^world: custom [0-9a-f]\{16\}" || fail "log info does not name the world"
+  "$duel" log info "$tmp/w.lcm" | grep -q "^channel DUEL_WORLD: 1 messages$" || fail "no world message"
+  "$duel" play "$tmp/champ.blob" "$tmp/net39a.blob" --food 17 --trace "$tmp/v1.csv" > /dev/null
+  ! cmp -s "$tmp/v1.csv" "$tmp/w.csv" || fail "the world's game is v1's"
+  echo "food 17 in another world: identical to play --world, the log names it"
   ;;
 kill)
   # kill -9 the east controller in the middle of a game: the world ends it within its timeout, east losing

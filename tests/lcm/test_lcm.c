@@ -234,7 +234,7 @@ static void tl_roundtrip_fn(void *ud, const duel_world *w, const nrt_q15 in[2][D
     n = duel_state_t_encode(buf, 0, (int)sizeof buf, &m);
     assert_true(n > 0 && n <= DUEL_LCM_MSG_MAX);
     assert_int_equal(duel_msg_decode_state(buf, (size_t)n, &back, msg, sizeof msg), DUEL_NODE_OK);
-    assert_int_equal(duel_lcm_state_read(&back, &w2, &e2, msg, sizeof msg), 0);
+    assert_int_equal(duel_lcm_state_read(&back, NULL, &w2, &e2, msg, sizeof msg), 0);
     tl_world_equal(&w2, w);
     assert_string_equal(back.controller[0], names[0]);
     if (w->t) {
@@ -272,7 +272,7 @@ static void test_state_roundtrip(void **state)
             duel_world y;
             x.robot[1].heading = k * 0x04000000u + (k & 1u);
             duel_lcm_state_fill(&m, &x, NULL, DUEL_TRAINING, names, 0);
-            assert_int_equal(duel_lcm_state_read(&m, &y, &ev, msg, sizeof msg), 0);
+            assert_int_equal(duel_lcm_state_read(&m, NULL, &y, &ev, msg, sizeof msg), 0);
             assert_int_equal(y.robot[1].heading, x.robot[1].heading);
             assert_true(m.heading_deg[1] > -180.0 && m.heading_deg[1] <= 180.0);
         }
@@ -288,24 +288,24 @@ static void test_state_read_rejects(void **state)
     (void)state;
     duel_world_init(&w, 42);
     duel_lcm_state_fill(&m, &w, NULL, 42, names, 0);
-    assert_int_equal(duel_lcm_state_read(&m, &back, &ev, msg, sizeof msg), 0);
+    assert_int_equal(duel_lcm_state_read(&m, NULL, &back, &ev, msg, sizeof msg), 0);
     m.food_x[10] += 1; /* not where configuration 42 puts it */
-    assert_int_equal(duel_lcm_state_read(&m, &back, &ev, msg, sizeof msg), -1);
+    assert_int_equal(duel_lcm_state_read(&m, NULL, &back, &ev, msg, sizeof msg), -1);
     assert_non_null(strstr(msg, "food item 10"));
     duel_lcm_state_fill(&m, &w, NULL, DUEL_TRAINING, names, 0); /* 11 items on the training food */
-    assert_int_equal(duel_lcm_state_read(&m, &back, &ev, msg, sizeof msg), -1);
+    assert_int_equal(duel_lcm_state_read(&m, NULL, &back, &ev, msg, sizeof msg), -1);
     duel_lcm_state_fill(&m, &w, NULL, 42, names, 0);
     m.step = DUEL_MAX_STEPS + 1;
-    assert_int_equal(duel_lcm_state_read(&m, &back, &ev, msg, sizeof msg), -1);
+    assert_int_equal(duel_lcm_state_read(&m, NULL, &back, &ev, msg, sizeof msg), -1);
     duel_lcm_state_fill(&m, &w, NULL, 42, names, 0);
     m.x[1] = DUEL_FIX(DUEL_BOARD);
-    assert_int_equal(duel_lcm_state_read(&m, &back, &ev, msg, sizeof msg), -1);
+    assert_int_equal(duel_lcm_state_read(&m, NULL, &back, &ev, msg, sizeof msg), -1);
     duel_lcm_state_fill(&m, &w, NULL, 42, names, 0);
     m.food_mask = 1 << 11;
-    assert_int_equal(duel_lcm_state_read(&m, &back, &ev, msg, sizeof msg), -1);
+    assert_int_equal(duel_lcm_state_read(&m, NULL, &back, &ev, msg, sizeof msg), -1);
     duel_lcm_state_fill(&m, &w, NULL, 42, names, 0);
     m.outcome = 5;
-    assert_int_equal(duel_lcm_state_read(&m, &back, &ev, msg, sizeof msg), -1);
+    assert_int_equal(duel_lcm_state_read(&m, NULL, &back, &ev, msg, sizeof msg), -1);
 }
 
 /* ---- the nodes in one process over memq:// ---- */

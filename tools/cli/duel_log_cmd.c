@@ -4,6 +4,7 @@
 
 #include "duel_cli.h"
 #include "duel_lcm.h"
+#include "duel_world_cfg.h"
 #include "duel_trace.h"
 
 static void duel_log_usage(void)
@@ -43,6 +44,11 @@ static int duel_log_info(const char *path)
             printf("game: training food, west %s, east %s\n", g->name[0], g->name[1]);
         else
             printf("game: food configuration %d, west %s, east %s\n", g->food_config, g->name[0], g->name[1]);
+        if (g->have_world) {
+            char label[40];
+            printf("world: %s (its rules in the log's world message)\n",
+                   duel_world_label(&g->rules, label, sizeof label));
+        }
         printf("complete steps: %lu\n", (unsigned long)g->rows);
         if (g->hellos != 0)
             printf("controller hellos: %llu\n", (unsigned long long)g->hellos);

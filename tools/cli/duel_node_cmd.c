@@ -6,12 +6,13 @@
 #include "duel_cli.h"
 #include "duel_ctrl.h"
 #include "duel_lcm.h"
+#include "duel_world_cfg.h"
 
 static void duel_node_usage(void)
 {
     fprintf(stderr, "usage: duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
                     "       duel_evolve node world --food K|training --lcm URL [--timeout-ms N] [--wait-ms N] "
-                    "[--period-ms N] [--lcm-log FILE.lcm]\n"
+                    "[--period-ms N] [--lcm-log FILE.lcm] [--world NAME|FILE]\n"
                     "  URL: an LCM provider, e.g. tcpq://127.0.0.1:7700 (docs/lcm.md)\n");
 }
 
@@ -133,6 +134,7 @@ static int duel_node_world_cmd(int argc, char **argv)
     const char *url = NULL, *log_path = NULL;
     duel_node_world_opts o;
     duel_node_world_result r;
+    duel_rules world;
     duel_lcm_rec rec;
     char err_text[4400];
     lcm_t *lcm;
@@ -146,7 +148,7 @@ static int duel_node_world_cmd(int argc, char **argv)
         const char *opt = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (v == NULL) {
             static const char *const takes[] = {"--food", "--lcm", "--timeout-ms", "--wait-ms", "--period-ms",
-                                                "--lcm-log", NULL};
+                                                "--lcm-log", "--world", NULL};
             return duel_cli_missing_value("node world", opt, takes);
         }
         i++;
@@ -174,6 +176,10 @@ static int duel_node_world_cmd(int argc, char **argv)
         } else if (strcmp(opt, "--period-ms") == 0) {
             if (duel_node_ms(opt, v, 0, &o.period_ms))
                 return 2;
+        } else if (strcmp(opt, "--world") == 0) {
+            if (duel_world_arg(&world, v) != 0)
+                return 2;
+            o.rules = &world;
         } else if (strcmp(opt, "--lcm-log") == 0) {
             log_path = v;
         } else {

@@ -127,11 +127,6 @@ int duel_cmd_play(int argc, char **argv)
     if (world_arg != NULL ? duel_world_arg(&world, world_arg) != 0
                           : duel_ctrl_world((const char *const *)argv, 2, &world, &found) != 0)
         return 2;
-    if (lcm_path != NULL && !duel_rules_equal(&world, duel_rules_v1())) {
-        fprintf(stderr, "duel_evolve: play: --lcm-log records world v1's games only (its messages do not name the "
-                        "world yet)\n");
-        return 2;
-    }
     if (duel_cli_ctrl_open(&a, argv[0]) != 0)
         return 2;
     if (duel_cli_ctrl_open(&b, argv[1]) != 0) {
@@ -181,8 +176,9 @@ int duel_cmd_play(int argc, char **argv)
             }
             lg.next = tf ? duel_trace_row : NULL;
             lg.next_ud = tf;
-            err = a_west ? duel_play(&a.ctrl, &b.ctrl, food, &r, duel_lcm_game_rec_step, &lg)
-                         : duel_play(&b.ctrl, &a.ctrl, food, &r, duel_lcm_game_rec_step, &lg);
+            duel_lcm_game_rec_world(&lg, &world);
+            err = a_west ? duel_play_rules(&world, &a.ctrl, &b.ctrl, food, &r, duel_lcm_game_rec_step, &lg)
+                         : duel_play_rules(&world, &b.ctrl, &a.ctrl, food, &r, duel_lcm_game_rec_step, &lg);
             if (duel_lcm_game_rec_close(&lg, err == 0, lerr, sizeof lerr) != 0 && err == 0) {
                 fprintf(stderr, "duel_evolve: %s\n", lerr);
                 rc = 1;

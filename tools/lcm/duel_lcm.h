@@ -23,9 +23,17 @@ void duel_lcm_sense_fill(duel_sense_t *m, int side, uint32_t step, const nrt_q15
 void duel_lcm_motor_fill(duel_motor_t *m, int side, int32_t step, const nrt_q15 out[DUEL_N_OUTPUTS], char *name);
 
 /* A decoded state message back into the world and the event that led to it,
- * every field checked (ranges, the food of its configuration). 0, or -1 with
+ * every field checked (ranges, the food of its configuration in the world of
+ * rules, NULL: v1). 0, or -1 with
  * one line in msg. */
-int duel_lcm_state_read(const duel_state_t *m, duel_world *w, duel_event *ev, char *msg, size_t msg_len);
+int duel_lcm_state_read(const duel_state_t *m, const duel_rules *rules, duel_world *w, duel_event *ev, char *msg,
+                        size_t msg_len);
+/* A world message of the rules (a game not of world v1 publishes one first). */
+void duel_lcm_world_fill(duel_world_t *m, const duel_rules *r);
+/* A world message: fingerprint, version and size, then the rules' bytes
+ * through duel_rules_decode and its identity against them. DUEL_NODE_OK, or
+ * an error with one line in msg. */
+int duel_msg_decode_world(const void *data, size_t len, duel_rules *r, char *msg, size_t msg_len);
 
 /* "west wins (collision, more energy)" ..., with the forfeit when there is one. */
 const char *duel_lcm_outcome_text(int outcome, int forfeit);
@@ -64,6 +72,8 @@ typedef struct duel_lcm_game_rec {
 
 int duel_lcm_game_rec_open(duel_lcm_game_rec *g, const char *path, int food_config, const char *west,
                            const char *east, char *err, size_t err_len);
+/* The world message of rules, first (nothing for world v1). */
+void duel_lcm_game_rec_world(duel_lcm_game_rec *g, const duel_rules *rules);
 /* duel_trace_fn: ud is the duel_lcm_game_rec. */
 void duel_lcm_game_rec_step(void *ud, const duel_world *w, const nrt_q15 in[2][DUEL_N_INPUTS],
                             const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev);
@@ -72,6 +82,7 @@ int duel_lcm_game_rec_close(duel_lcm_game_rec *g, int keep, char *err, size_t er
 /* ---- the world node (duel_node_world.c) ---- */
 typedef struct duel_node_world_opts {
     int food_config;      /* DUEL_TRAINING or 0..143 */
+    const duel_rules *rules; /* the world (NULL: v1); published first on DUEL_WORLD when not v1 */
     int timeout_ms;       /* a controller answers each step within this, or loses */
     int wait_ms;          /* both controllers say hello within this */
     int period_ms;        /* at least this long per step (0: as fast as the controllers answer) */
@@ -153,6 +164,8 @@ typedef struct duel_lcm_game {
     nrt_q15 out[DUEL_MAX_STEPS][2][DUEL_N_OUTPUTS];
     uint8_t have[DUEL_MAX_STEPS + 1];    /* DUEL_LCM_HAVE_* */
     int food_config;                     /* from the first state message */
+    duel_rules rules;                    /* the world: a world message before the first state, else v1 */
+    int have_world;                      /* a world message was read */
     char name[2][DUEL_NODE_NAME_MAX + 1];
     int started;                         /* a state of step 0 was read */
     int over;                            /* the final state (an outcome) was read */

@@ -162,7 +162,7 @@ static int duel_lcm_take_state(duel_lcm_game *g, const duel_state_t *m, char *ms
     duel_event ev;
     uint32_t t;
     int s;
-    if (duel_lcm_state_read(m, &w, &ev, msg, msg_len) != 0)
+    if (duel_lcm_state_read(m, &g->rules, &w, &ev, msg, msg_len) != 0)
         return -1;
     t = w.t;
     if (!g->started) {
@@ -201,6 +201,19 @@ static int duel_lcm_take_state(duel_lcm_game *g, const duel_state_t *m, char *ms
 static int duel_lcm_take(duel_lcm_game *g, const duel_lcm_event *e, char *msg, size_t msg_len)
 {
     int err = 0, s;
+    if (strcmp(e->channel, DUEL_CH_WORLD) == 0) {
+        /* the world's rules, once, before the game's first state */
+        duel_rules r;
+        if (duel_msg_decode_world(e->data, e->len, &r, msg, msg_len) != DUEL_NODE_OK)
+            return -1;
+        if (g->started || g->have_world) {
+            snprintf(msg, msg_len, "a world message %s", g->started ? "after the game's first state" : "twice");
+            return -1;
+        }
+        g->rules = r;
+        g->have_world = 1;
+        return 0;
+    }
     if (strcmp(e->channel, DUEL_CH_STATE) == 0) {
         duel_state_t m;
         err = duel_msg_decode_state(e->data, e->len, &m, msg, msg_len);
@@ -268,6 +281,8 @@ int duel_lcm_game_read(duel_lcm_game **out, const char *path, char *err, size_t 
     if (duel_lcm_reader_open(&rd, path, err, err_len) != 0)
         return -1;
     g = (duel_lcm_game *)calloc(1, sizeof *g);
+    if (g != NULL)
+        g->rules = *duel_rules_v1(); /* a log without a world message is world v1's */
     if (g == NULL) {
         snprintf(err, err_len, "%s: out of memory", path);
         duel_lcm_reader_close(&rd);
@@ -345,6 +360,7 @@ int duel_replay_from_lcm_log(duel_replay *r, const char *path, char *err, size_t
     r->n = 0;
     if (g != NULL && g->started) {
         r->food_config = g->food_config;
+        r->rules = g->rules; /* the frames' worlds point here, not into g, which is freed below */
         snprintf(r->west, sizeof r->west, "%s", g->name[0]);
         snprintf(r->east, sizeof r->east, "%s", g->name[1]);
         /* what came before a truncation stays readable */
@@ -352,6 +368,7 @@ int duel_replay_from_lcm_log(duel_replay *r, const char *path, char *err, size_t
             memset(&f, 0, sizeof f);
             f.t = t;
             f.w = g->w[t];
+            f.w.rules = &r->rules;
             memcpy(f.in, g->in[t], sizeof f.in);
             memcpy(f.out, g->out[t], sizeof f.out);
             f.ev = g->ev[t + 1];
@@ -365,6 +382,7 @@ int duel_replay_from_lcm_log(duel_replay *r, const char *path, char *err, size_t
             memset(&f, 0, sizeof f);
             f.t = g->final_step;
             f.w = g->final_w;
+            f.w.rules = &r->rules;
             f.ev.outcome = g->final_w.outcome;
             if (duel_replay_push(r, &f) != 0) {
                 snprintf(err, err_len, "%s: out of memory", path);

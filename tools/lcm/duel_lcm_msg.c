@@ -55,6 +55,14 @@ void duel_lcm_state_fill(duel_state_t *m, const duel_world *w, const duel_event 
     m->forfeit = (int8_t)forfeit;
 }
 
+void duel_lcm_world_fill(duel_world_t *m, const duel_rules *r)
+{
+    memset(m, 0, sizeof *m);
+    m->version = DUEL_WORLD_T_VERSION;
+    m->identity = (int64_t)duel_rules_id(r);
+    duel_rules_encode(r, (uint8_t *)m->rules);
+}
+
 void duel_lcm_sense_fill(duel_sense_t *m, int side, uint32_t step, const nrt_q15 in[DUEL_N_INPUTS])
 {
     int i;
@@ -82,7 +90,8 @@ void duel_lcm_motor_fill(duel_motor_t *m, int side, int32_t step, const nrt_q15 
     m->controller = name;
 }
 
-int duel_lcm_state_read(const duel_state_t *m, duel_world *w, duel_event *ev, char *msg, size_t msg_len)
+int duel_lcm_state_read(const duel_state_t *m, const duel_rules *rules, duel_world *w, duel_event *ev, char *msg,
+                        size_t msg_len)
 {
     duel_world ref;
     int s, i;
@@ -96,7 +105,9 @@ int duel_lcm_state_read(const duel_state_t *m, duel_world *w, duel_event *ev, ch
         snprintf(msg, msg_len, "food configuration %ld, outside -1..%d", (long)m->food_config, DUEL_CONFIGS - 1);
         return -1;
     }
-    duel_world_init(&ref, m->food_config);
+    if (rules == NULL)
+        rules = duel_rules_v1();
+    duel_world_init_rules(&ref, rules, m->food_config);
     if (m->n_food != ref.n_food) {
         snprintf(msg, msg_len, "%d food items, configuration %ld has %u", m->n_food, (long)m->food_config,
                  (unsigned)ref.n_food);
@@ -123,8 +134,8 @@ int duel_lcm_state_read(const duel_state_t *m, duel_world *w, duel_event *ev, ch
     w->outcome = m->outcome;
     for (s = 0; s < 2; s++) {
         duel_robot *r = &w->robot[s];
-        if (m->x[s] < DUEL_FIX(DUEL_RADIUS) || m->x[s] > DUEL_FIX(DUEL_BOARD - DUEL_RADIUS) ||
-            m->y[s] < DUEL_FIX(DUEL_RADIUS) || m->y[s] > DUEL_FIX(DUEL_BOARD - DUEL_RADIUS)) {
+        if (m->x[s] < rules->radius || m->x[s] > DUEL_FIX(DUEL_BOARD) - rules->radius || m->y[s] < rules->radius ||
+            m->y[s] > DUEL_FIX(DUEL_BOARD) - rules->radius) {
             snprintf(msg, msg_len, "%s robot off the board", s == 0 ? "west" : "east");
             return -1;
         }
@@ -152,4 +163,33 @@ const char *duel_lcm_outcome_text(int outcome, int forfeit)
     default: break;
     }
     return duel_outcome_text(outcome);
+}
+
+int duel_msg_decode_world(const void *data, size_t len, duel_rules *r, char *msg, size_t msg_len)
+{
+    /* fingerprint, version, identity, the rules: no strings, one size */
+    const size_t size = 8u + 4u + 8u + DUEL_RULES_BYTES;
+    duel_world_t m;
+    size_t off = 0;
+    int err = duel_msg_check(data, len, __duel_world_t_get_hash(), DUEL_WORLD_T_VERSION, "duel.world_t", msg, msg_len);
+    if (err)
+        return err;
+    if (len != size) {
+        snprintf(msg, msg_len, "a %zu-byte duel.world_t, not %zu", len, size);
+        return DUEL_NODE_E_MALFORMED;
+    }
+    if (duel_world_t_decode(data, 0, (int)len, &m) != (int)len) {
+        snprintf(msg, msg_len, "a %zu-byte duel.world_t that does not decode", len);
+        return DUEL_NODE_E_MALFORMED;
+    }
+    if (duel_rules_decode(r, (const uint8_t *)m.rules, DUEL_RULES_BYTES, &off) != DUEL_OK) {
+        snprintf(msg, msg_len, "duel.world_t: rules that cannot make a game (refused at byte %zu of them)", off);
+        return DUEL_NODE_E_MALFORMED;
+    }
+    if ((uint64_t)m.identity != duel_rules_id(r)) {
+        snprintf(msg, msg_len, "duel.world_t: identity %016llx, but its rules' is %016llx",
+                 (unsigned long long)(uint64_t)m.identity, (unsigned long long)duel_rules_id(r));
+        return DUEL_NODE_E_MALFORMED;
+    }
+    return DUEL_NODE_OK;
 }

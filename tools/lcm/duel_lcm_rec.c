@@ -103,6 +103,15 @@ int duel_lcm_game_rec_open(duel_lcm_game_rec *g, const char *path, int food_conf
     return duel_lcm_rec_open(&g->rec, path, err, err_len);
 }
 
+void duel_lcm_game_rec_world(duel_lcm_game_rec *g, const duel_rules *rules)
+{
+    duel_world_t m;
+    if (rules == NULL || duel_rules_equal(rules, duel_rules_v1()))
+        return; /* a log without a world message is world v1's: v1's logs are as they were */
+    duel_lcm_world_fill(&m, rules);
+    DUEL_LCM_PUT(g, duel_world_t, DUEL_CH_WORLD, &m, 0);
+}
+
 static void duel_lcm_game_rec_state(duel_lcm_game_rec *g, const duel_world *w, const duel_event *prev)
 {
     duel_state_t m;

@@ -25,10 +25,12 @@
 #include "duel_motor_t.h"
 #include "duel_sense_t.h"
 #include "duel_state_t.h"
+#include "duel_world_t.h"
 #include "nrt.h"
 
 /* ---- channels ---- */
 #define DUEL_CH_STATE "DUEL_STATE"
+#define DUEL_CH_WORLD "DUEL_WORLD" /* the rules, when the world is not v1 (duel_world_t) */
 #define DUEL_CH_SENSE_WEST "DUEL_SENSE_WEST"
 #define DUEL_CH_SENSE_EAST "DUEL_SENSE_EAST"
 #define DUEL_CH_MOTOR_WEST "DUEL_MOTOR_WEST"
@@ -69,6 +71,11 @@ enum duel_node_error {
 int duel_msg_decode_sense(const void *data, size_t len, duel_sense_t *m, char *msg, size_t msg_len);
 int duel_msg_decode_motor(const void *data, size_t len, duel_motor_t *m, char *msg, size_t msg_len);
 int duel_msg_decode_state(const void *data, size_t len, duel_state_t *m, char *msg, size_t msg_len);
+/* The fingerprint and format version every duel message starts with
+ * (duel_lcm_msg.c checks the world message with it). DUEL_NODE_OK, or an
+ * error with one line in msg. */
+int duel_msg_check(const void *data, size_t len, int64_t hash, int32_t version, const char *type, char *msg,
+                   size_t msg_len);
 
 /* ---- the controller node (duel_node_controller.c) ---- */
 typedef struct duel_node_ctrl {

@@ -21,7 +21,7 @@ static int32_t duel_msg_be32(const uint8_t *p)
 }
 
 /* Fingerprint, then the version field that every duel message has first. */
-static int duel_msg_check(const void *data, size_t len, int64_t hash, int32_t version, const char *type, char *msg,
+int duel_msg_check(const void *data, size_t len, int64_t hash, int32_t version, const char *type, char *msg,
                           size_t msg_len)
 {
     const uint8_t *p = (const uint8_t *)data;
@@ -151,3 +151,4 @@ int duel_msg_decode_state(const void *data, size_t len, duel_state_t *m, char *m
     }
     return DUEL_NODE_OK;
 }
+

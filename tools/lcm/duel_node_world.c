@@ -113,8 +113,8 @@ int duel_node_world_open(duel_node_world *nw, lcm_t *lcm, const duel_node_world_
     nw->o = o;
     nw->r = r;
     nw->step = -1;
-    if (duel_world_init(&w, o->food_config) != DUEL_OK) {
-        duel_nw_fail(nw, DUEL_NODE_E_ARG, "bad food configuration %d", o->food_config);
+    if (duel_world_init_rules(&w, o->rules, o->food_config) != DUEL_OK) {
+        duel_nw_fail(nw, DUEL_NODE_E_ARG, "bad food configuration %d, or rules that cannot make a game", o->food_config);
         return nw->err;
     }
     nw->sub[0] = lcm_subscribe(lcm, DUEL_CH_MOTOR_WEST, duel_nw_on_motor, nw);
@@ -144,7 +144,7 @@ int duel_node_world_play(duel_node_world *nw)
 
     if (nw->err)
         return nw->err;
-    duel_world_init(&w, o->food_config);
+    duel_world_init_rules(&w, o->rules, o->food_config);
     /* both controllers say hello before the first sensor message, so none is lost */
     duel_nw_wait(nw, duel_node_now_ms() + o->wait_ms, nw->hello);
     if (!nw->err && !(nw->hello[0] && nw->hello[1]))
@@ -153,6 +153,13 @@ int duel_node_world_play(duel_node_world *nw)
                      nw->hello[0] || nw->hello[1] ? "is it running on this LCM URL?" : "are they running on this LCM URL?");
 
     memset(&ev, 0, sizeof ev);
+    if (!nw->err && o->rules != NULL && !duel_rules_equal(o->rules, duel_rules_v1())) {
+        /* the world's rules before its first state: readers check the states against them */
+        uint8_t buf[DUEL_LCM_MSG_MAX];
+        duel_world_t m;
+        duel_lcm_world_fill(&m, o->rules);
+        duel_nw_send(nw, DUEL_CH_WORLD, buf, duel_world_t_encode(buf, 0, (int)sizeof buf, &m));
+    }
     while (!nw->err) {
         int64_t step_start = duel_node_now_ms();
         duel_nw_state(nw, &w, w.t == 0 ? NULL : &ev, DUEL_STATE_T_FORFEIT_NONE);

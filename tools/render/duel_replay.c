@@ -10,6 +10,7 @@ void duel_replay_init(duel_replay *r)
 {
     memset(r, 0, sizeof *r);
     r->food_config = DUEL_TRAINING;
+    r->rules = *duel_rules_v1();
 }
 
 void duel_replay_free(duel_replay *r)
@@ -85,9 +86,10 @@ int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_co
 
     r->n = 0;
     r->food_config = food_config;
+    r->rules = rules != NULL ? *rules : *duel_rules_v1();
     rec.r = r;
     rec.err = 0;
-    err = duel_play_rules(rules, west, east, food_config, &res, duel_replay_trace, &rec);
+    err = duel_play_rules(&r->rules, west, east, food_config, &res, duel_replay_trace, &rec);
     if (!err)
         err = rec.err;
     if (!err)

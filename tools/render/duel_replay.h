@@ -22,6 +22,7 @@ typedef struct duel_replay {
     duel_frame *frames;
     size_t n, cap;
     int food_config;          /* DUEL_TRAINING or 0..DUEL_CONFIGS-1 */
+    duel_rules rules;         /* the game's world, which every frame's world points at */
     char west[256], east[256]; /* the controllers' names, for captions */
 } duel_replay;
 
@@ -33,8 +34,7 @@ int duel_replay_push(duel_replay *r, const duel_frame *f);
 /* Plays west against east on food_config and records every frame
  * (tools/duel_replay.c). 0, or a negative duel_error / -ENOMEM. */
 int duel_replay_from_game(duel_replay *r, duel_controller *west, duel_controller *east, int food_config);
-/* The same in the world of rules (NULL: v1), which the frames' worlds point
- * at: they must outlive the frames' use. */
+/* The same in the world of rules (NULL: v1), copied into r->rules. */
 int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_controller *west, duel_controller *east,
                                 int food_config);
 
