@@ -13,22 +13,7 @@ trap 'rm -rf "$tmp"' EXIT
 . "$here/cli_lib.sh"
 
 # a world unlike v1 in every chosen rule
-cat > "$tmp/variant.ini" <<'INI'
-[world]
-rules = v1
-radius = 12.5
-start_west = 80 120 90
-start_east = 520 480 -45
-start_energy = 900
-food_energy = 150
-eat_dist = 18
-share_dist = 3
-train_food = 150 150, 300 300, 450 450, 300 120, 210 500, 580 300
-food_range = 250
-robot_range = 400
-energy_scale = 90
-wall_range = 120
-INI
+cp "$here/fixtures/world-variant.ini" "$tmp/variant.ini"
 
 case "$what" in
 config)

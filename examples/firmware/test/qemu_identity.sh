@@ -30,21 +30,7 @@ same_output() {
 
 if [ "$what" = world ]; then
   # every chosen rule other than v1's: starts, energies, food, eating, ranges
-  cat > "$work/world.ini" <<'INI'
-[world]
-radius = 12.5
-start_west = 80 120 90
-start_east = 520 480 -45
-start_energy = 900
-food_energy = 150
-eat_dist = 18
-share_dist = 3
-train_food = 150 150, 300 300, 450 450, 300 120, 210 500, 580 300
-food_range = 250
-robot_range = 400
-energy_scale = 90
-wall_range = 120
-INI
+  cp "$(dirname "$0")/../../../tests/tools/fixtures/world-variant.ini" "$work/world.ini"
   "$duel" export --world "$work/world.ini" --raw -o "$work/world.bin"
   FW_WORLD="$work/world.ini" "$fw" build "$machine" "$work" "$duel" "$a" "$b"
   "$host" "$a" "$b" "$work/world.bin" > "$work/host.txt" || fail "host: exit $?"
