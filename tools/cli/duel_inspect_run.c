@@ -6,6 +6,8 @@
 
 #include "duel_cli.h"
 #include "duel_ctrl.h"
+#include "duel_files.h"
+#include "duel_world_cfg.h"
 #include "neat_coev.h"
 
 
@@ -26,19 +28,87 @@ static void duel_innov_range(const neat_genome *g, uint32_t *lo, uint32_t *hi)
     }
 }
 
+/* One population's line: its genomes, species, threshold, sizes and innovations. */
+static void duel_inspect_pop(const neat_pop *pop, const char *name)
+{
+    uint32_t i, hmin = UINT32_MAX, hmax = 0, cmin = UINT32_MAX, cmax = 0, ilo = UINT32_MAX, ihi = 0;
+    for (i = 0; i < neat_pop_size(pop); i++) {
+        const neat_genome *g = neat_pop_genome(pop, i);
+        uint32_t h = neat_genome_hidden_count(g), n = neat_genome_enabled_count(g);
+        hmin = h < hmin ? h : hmin;
+        hmax = h > hmax ? h : hmax;
+        cmin = n < cmin ? n : cmin;
+        cmax = n > cmax ? n : cmax;
+        duel_innov_range(g, &ilo, &ihi);
+    }
+    printf("%s: %u genomes in %u species, delta_t %.4f; hidden %u..%u, connections %u..%u; "
+           "innovations in use %u..%u, next %u\n",
+           name, neat_pop_size(pop), neat_pop_species_count(pop), neat_pop_delta_t(pop), hmin, hmax, cmin, cmax,
+           ilo <= ihi ? ilo : 0, ilo <= ihi ? ihi : 0, neat_pop_innovations(pop));
+}
+
+/* The world of a checkpoint's game tag (its first DUEL_RULES_BYTES; none: v1) */
+static void duel_inspect_world(const uint8_t *tag, size_t len)
+{
+    duel_rules r = *duel_rules_v1();
+    char label[40];
+    if (len >= DUEL_RULES_BYTES && duel_rules_decode(&r, tag, DUEL_RULES_BYTES, NULL) != DUEL_OK) {
+        printf("world: damaged rules in the checkpoint's tag\n");
+        return;
+    }
+    printf("world: %s%s\n", duel_world_label(&r, label, sizeof label), len == 0 ? " (no tag: a run from before the "
+                                                                                   "rules were data)" : "");
+}
+
+/* A run against fixed opponents: its population checkpoint. */
+static int duel_inspect_pop_ckpt(const char *path, const uint8_t *buf, size_t len)
+{
+    neat_pop *pop;
+    size_t off = 0, tlen = 0;
+    const uint8_t *tag;
+    int e = neat_pop_load(&pop, buf, len, NULL, &off);
+    if (e) {
+        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(e));
+        return 2;
+    }
+    printf("file: %s\n", path);
+    printf("population checkpoint (a run against fixed opponents), format %u: next generation %u\n",
+           NEAT_CHECKPOINT_VERSION, neat_pop_generation(pop));
+    printf("mode: %s, net_step %s\n", duel_mode_name(neat_pop_params(pop)->mode),
+           neat_pop_params(pop)->net_step == NEAT_STEP_PROPAGATE ? "propagate" : "sync");
+    duel_inspect_pop(pop, "population");
+    tag = neat_pop_game(pop, &tlen);
+    duel_inspect_world(tag, tlen);
+    neat_pop_free(pop);
+    return 0;
+}
+
 int duel_inspect_run(const char *arg)
 {
     char path[4200];
     struct stat st;
     neat_coev *c;
     const neat_genome *s;
-    uint32_t p, i, lo = UINT32_MAX, hi = 0;
+    uint32_t p, lo = UINT32_MAX, hi = 0;
     int e;
 
     if (stat(arg, &st) == 0 && S_ISDIR(st.st_mode))
         snprintf(path, sizeof path, "%s/checkpoint.bin", arg);
     else
         snprintf(path, sizeof path, "%s", arg);
+    {
+        /* the kind of checkpoint by its magic: a population's is a run against fixed opponents */
+        uint8_t *buf = NULL;
+        size_t len = 0;
+        if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) == 0) {
+            if (len >= 8 && memcmp(buf, "NEATCKPT", 8) == 0) {
+                e = duel_inspect_pop_ckpt(path, buf, len);
+                free(buf);
+                return e;
+            }
+            free(buf);
+        }
+    }
     e = duel_ckpt_load("", path, &c);
     if (e > 0)
         fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(ENOENT));
@@ -56,24 +126,14 @@ int duel_inspect_run(const char *arg)
                neat_genome_hidden_count(s), neat_genome_enabled_count(s), lo, hi);
     else
         printf("start: %u nodes (%u hidden), no connections\n", s->n_nodes, neat_genome_hidden_count(s));
-    for (p = 0; p < 2; p++) {
-        const neat_pop *pop = neat_coev_pop(c, p);
-        uint32_t hmin = UINT32_MAX, hmax = 0, cmin = UINT32_MAX, cmax = 0, ilo = UINT32_MAX, ihi = 0;
-        for (i = 0; i < neat_pop_size(pop); i++) {
-            const neat_genome *g = neat_pop_genome(pop, i);
-            uint32_t h = neat_genome_hidden_count(g), n = neat_genome_enabled_count(g);
-            hmin = h < hmin ? h : hmin;
-            hmax = h > hmax ? h : hmax;
-            cmin = n < cmin ? n : cmin;
-            cmax = n > cmax ? n : cmax;
-            duel_innov_range(g, &ilo, &ihi);
-        }
-        printf("population %c: %u genomes in %u species, delta_t %.4f; hidden %u..%u, connections %u..%u; "
-               "innovations in use %u..%u, next %u\n",
-               p == 0 ? 'A' : 'B', neat_pop_size(pop), neat_pop_species_count(pop), neat_pop_delta_t(pop), hmin,
-               hmax, cmin, cmax, ilo <= ihi ? ilo : 0, ilo <= ihi ? ihi : 0, neat_pop_innovations(pop));
-    }
+    for (p = 0; p < 2; p++)
+        duel_inspect_pop(neat_coev_pop(c, p), p == 0 ? "population A" : "population B");
     printf("dominance levels: %u\n", neat_coev_dominant_count(c));
+    {
+        size_t tlen = 0;
+        const uint8_t *tag = neat_coev_game(c, &tlen);
+        duel_inspect_world(tag, tlen);
+    }
     neat_coev_free(c);
     return 0;
 }
