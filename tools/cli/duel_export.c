@@ -25,8 +25,8 @@ typedef struct duel_export {
 
 static void duel_export_usage(void)
 {
-    fprintf(stderr, "usage: duel_evolve export BLOB --c-array NAME [-o FILE.c] [--header FILE.h]\n"
-                    "       duel_evolve export --world NAME|FILE (--c-array NAME [-o FILE.c] | --raw -o FILE)\n");
+    fprintf(stderr, "usage: duel_evolve export BLOB --c-array NAME [-o FILE.c] [--header FILE.h] | export --world "
+                    "NAME|FILE (--c-array NAME [-o FILE.c] | --raw -o FILE)\n");
 }
 
 /* A world's rules as a C array of their canonical bytes (docs/formats.md, "World rules"), which a

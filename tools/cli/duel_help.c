@@ -42,14 +42,18 @@ static const duel_help_entry duel_help_entries[] = {
      "  --config FILE            start from this INI file instead of the defaults\n"
      "  --set key=value          override one parameter; repeatable\n"},
     {"ladder",
-     "usage: duel_evolve ladder DIR [--top | --levels L1-L2] [--against NAME,...] [--csv FILE] [--json]\n"
+     "usage: duel_evolve ladder DIR [--top | --levels L1-L2] [--against NAME,...] [--world NAME|FILE] [--csv FILE] "
+     "[--json]\n"
      "Plays every dominant strategy of a run against each built-in strategy (idle, spinner, forager,\n"
-     "hunter, forager-hunter) in 288-game comparisons and writes DIR/ladder.csv and a table.\n"
+     "hunter, forager-hunter) in 288-game comparisons, in the run's world, and writes DIR/ladder.csv and a\n"
+     "table.\n"
      "  --top                    the highest dominant only (one row)\n"
      "  --levels L1-L2           dominance levels L1 to L2 only (or one level L)\n"
      "  --against NAME,...       these built-in strategies only, in this order\n"
      "  --csv FILE               the CSV to FILE (a part of the ladder, from --levels or --against, is\n"
      "                           written only there: DIR/ladder.csv keeps the whole ladder)\n"
+     "  --world NAME|FILE        play in this world (a named one, or an INI file's [world]) instead of the\n"
+     "                           run's; the ladder then goes only where --csv says\n"
      "  --json                   the results as one JSON object on stdout instead of the table\n"},
     {"compare",
      "usage: duel_evolve compare RUN... --against RUN... [options]\n"
@@ -78,7 +82,7 @@ static const duel_help_entry duel_help_entries[] = {
      "  report DIR               write the report again from the files, playing nothing\n"},
     {"play",
      "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
-     "[--lcm-log FILE.lcm] [--json]\n"
+     "[--lcm-log FILE.lcm] [--world NAME|FILE] [--json]\n"
      "One game (or a 288-game comparison) between A and B: champion blobs, genome files or\n"
      "builtin:NAME (idle, spinner, forager, hunter, forager-hunter).\n"
      "  --games 1|288            one game (default) or the comparison: every food configuration from\n"
@@ -87,11 +91,13 @@ static const duel_help_entry duel_help_entries[] = {
      "  --side west|east         A's side (default west)\n"
      "  --trace FILE.csv         every step's state, inputs and outputs (docs/duelsim.md)\n"
      "  --lcm-log FILE.lcm       the game as an LCM log (docs/lcm.md)\n"
+     "  --world NAME|FILE        the world (a named one, or an INI file's [world]); default: the world of the\n"
+     "                           runs the champions come from, else v1\n"
      "  --json                   the result as one JSON object on stdout (docs/tools.md, \"play --json\")\n"},
     {"node",
      "usage: duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
      "       duel_evolve node world --food K|training --lcm URL [--timeout-ms N] [--wait-ms N] "
-     "[--period-ms N] [--lcm-log FILE.lcm]\n"
+     "[--period-ms N] [--lcm-log FILE.lcm] [--world NAME|FILE]\n"
      "A game between processes over LCM (docs/lcm.md); URL is memq://, file:// or tcpq://HOST:PORT.\n"
      "  --side west|east         the controller's robot\n"
      "  --lcm URL                the LCM provider\n"
@@ -100,7 +106,8 @@ static const duel_help_entry duel_help_entries[] = {
      "  --timeout-ms N           how long a silent peer is waited for (world 1000 per step,\n"
      "                           controller 10000)\n"
      "  --period-ms N            the world's pace, one step per N ms (default 0: as fast as it can)\n"
-     "  --lcm-log FILE.lcm       the world records every message it publishes and accepts\n"},
+     "  --lcm-log FILE.lcm       the world records every message it publishes and accepts\n"
+     "  --world NAME|FILE        the world node plays in this world (published first on DUEL_WORLD)\n"},
     {"log",
      "usage: duel_evolve log info FILE.lcm\n"
      "       duel_evolve log dump FILE.lcm [--channel C]\n"
@@ -117,12 +124,13 @@ static const duel_help_entry duel_help_entries[] = {
      "  -o FILE.dot              write to FILE.dot (atomically) instead of stdout\n"
      "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"},
     {"render",
-     "usage: duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [options]\n"
+     "usage: duel_evolve render (LOG.lcm | A B [--food K --side west|east --world NAME|FILE]) --out DIR [options]\n"
      "A duel's frames as PNG images (and a video), from an LCM log or from a game played now\n"
      "(docs/render.md).\n"
      "  --out DIR                the directory for frame-K.png\n"
      "  --food K|training        the game's food configuration (A B only)\n"
      "  --side west|east         A's side (A B only)\n"
+     "  --world NAME|FILE        the game's world (A B only; default: the runs' of the champions, else v1)\n"
      "  --size S                 S x S pixels, 64..2048 (default 600)\n"
      "  --every N                every Nth step's frame, and the last (default 1)\n"
      "  --sensors                draw the rangefinder sectors\n"
@@ -136,11 +144,15 @@ static const duel_help_entry duel_help_entries[] = {
      "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"},
     {"export",
      "usage: duel_evolve export BLOB|GENOME --c-array NAME [-o FILE.c] [--header FILE.h]\n"
-     "The champion as a C array for a firmware (docs/firmware.md).\n"
+     "       duel_evolve export --world NAME|FILE (--c-array NAME [-o FILE.c] | --raw -o FILE)\n"
+     "The champion as a C array for a firmware, or a world's rules as their canonical bytes\n"
+     "(docs/firmware.md).\n"
      "  --c-array NAME           the array's name (a C identifier)\n"
      "  -o FILE.c                write to FILE.c (atomically) instead of stdout\n"
      "  --header FILE.h          also a header: the array, NAME_BLOB_SIZE, NAME_MEM_SIZE (the bytes nrt_load\n"
-     "                           needs), NAME_INPUTS, NAME_OUTPUTS; the .c then includes it\n"},
+     "                           needs), NAME_INPUTS, NAME_OUTPUTS; the .c then includes it\n"
+     "  --world NAME|FILE        export a world's rules (a named one, or an INI file's [world]) instead\n"
+     "  --raw                    with --world: the bytes themselves to -o FILE (the host twin's WORLD.bin)\n"},
 };
 
 int duel_help_wanted(int argc, char **argv)
