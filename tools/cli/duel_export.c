@@ -190,10 +190,12 @@ static void duel_export_write(FILE *f, const duel_export *x)
     fprintf(f, "; do not edit.\n"
                " * Champion blob, format version %d (docs/formats.md): %lu bytes, CRC-32 0x%08lx\n"
                " * (header bytes 28..31, checked by nrt_load when exported);\n"
-               " * %u inputs (bias included), %u outputs, %u hidden nodes, %u connections.\n"
+               " * %u inputs (bias included), %u outputs, %u hidden nodes, %u connections%s.\n"
                " * nrt_load needs %lu bytes of memory for it (nrt_mem_required). */\n",
-            NRT_FORMAT_VERSION, (unsigned long)x->len, crc, (unsigned)x->net.n_inputs, (unsigned)x->net.n_outputs,
-            (unsigned)x->net.n_hidden, (unsigned)x->net.n_conns, (unsigned long)x->mem_required);
+            x->blob[NRT_OFF_VERSION] | x->blob[NRT_OFF_VERSION + 1] << 8, (unsigned long)x->len, crc,
+            (unsigned)x->net.n_inputs, (unsigned)x->net.n_outputs, (unsigned)x->net.n_hidden, (unsigned)x->net.n_conns,
+            x->blob[NRT_OFF_VERSION] >= NRT_FORMAT_VERSION_PROPAGATE ? ", stepped by propagation" : "",
+            (unsigned long)x->mem_required);
     if (x->header != NULL) {
         /* the header's declarations, checked against these definitions by the compiler */
         fprintf(f, "#include \"");
