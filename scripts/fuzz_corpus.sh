@@ -28,6 +28,8 @@ cp "$work/r3/checkpoint.bin" "$c/coev/gen3.bin"
 cp "$work/r3/champions/"*.genome "$c/genome/"
 
 cp "$root/configs/"*.ini "$root/bench/"*.ini "$root/tests/tools/coev-small.ini" "$c/ini/"
+cp "$root/tests/tools/fixtures/world-variant.ini" "$c/ini/world-variant.ini"
+"$duel" config --dump --config "$root/configs/vs-forager-hunter.ini" --set world.food_range=300 > "$c/ini/run-config-fixed.ini"
 for p in "$root/configs/plans/"*.ini "$root/tests/tools/tiny-plan.ini"; do cp "$p" "$c/ini/plan-$(basename "$p")"; done
 cp "$work/r3/config.ini" "$c/ini/run-config.ini"
 printf 'pop_size=40\n[neat]\nc1 = 25e-1\r\n; comment\n# comment\n[run]\nseed = 3\n' > "$c/ini/set-and-syntax.ini"
