@@ -2,7 +2,7 @@
 # neat_duel:: alias, include directories for the build and the install tree, the shared library's version and
 # the export rules. Included by the top CMakeLists.txt; each library's own CMakeLists.txt calls neat_library().
 
-# 0.x: every minor release may change the ABI, so the SONAME carries major.minor (libneat.so.0.15); from 1.0 on,
+# 0.x: every minor release may change the ABI, so the SONAME carries major.minor (libneat.so.0.16); from 1.0 on,
 # the major alone
 if(PROJECT_VERSION_MAJOR EQUAL 0)
   set(NEAT_SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
