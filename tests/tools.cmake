@@ -145,6 +145,18 @@ foreach(check ini bench-ini lost-checkpoint trace links stdout)
                    ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${check})
 endforeach()
 
+# issue 40: files that are not ours, records rebuilt or refused, bounded reads, the lock (tests/tools/safety.sh)
+if(NEAT_SANITIZE)
+  set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan-asan.ini)
+else()
+  set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan.ini)
+endif()
+foreach(check rundir lock bounds records)
+  add_test(NAME tools/safety_${check}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety.sh $<TARGET_FILE:duel_evolve>
+                   ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check})
+endforeach()
+
 # faults: every write, fsync and rename of a short run and its resume failing in turn (an LD_PRELOAD shim)
 add_library(fault_shim MODULE tools/fault_shim.c)
 target_compile_options(fault_shim PRIVATE -Wall -Wextra -Werror) # not -Wpedantic: it casts dlsym's void *

@@ -68,10 +68,11 @@ static void test_long_rows(void **state)
     assert_string_equal(rows[999].pop, "B");
     assert_int_equal(rows[999].conns, 1039);
     free(rows);
-    /* a torn last row (the writer died) is not a row */
-    assert_int_equal(duel_dominance_parse("d.csv", text, len - 5, &rows, &n, err, sizeof err), 0);
-    assert_int_equal(n, 999);
-    free(rows);
+    /* a torn last row (the writer died, a cut copy) is refused, never dropped: it may be the top level */
+    assert_int_equal(duel_dominance_parse("d.csv", text, len - 5, &rows, &n, err, sizeof err), -1);
+    assert_string_equal(err, "d.csv:1001: the last row is cut short (no newline): resuming the run rebuilds the "
+                             "file from its checkpoint (duel_evolve resume RUN)");
+    assert_null(rows);
     free(text);
 }
 
@@ -130,11 +131,25 @@ static void test_generations(void **state)
                                                "0,B,6,0.2188,1,3.0000,0.0000,39.0000,0,39,0,2,39,45,1536,0,1.149\n"
                                                "1,A,3,0.5,1,3.0,0.0,39.0,0,39,0,1,39,41,1536,0,0.5\n"
                                                "1,B,3,0.5,1,3.0,0.0,39.0,0,39,0,1,39,4"; /* torn */
+    const char *gap = DUEL_GENERATIONS_HEADER "0,A,2,0.7812,1,3.0000,0.0000,39.0000,0,39,0,0,39,39,1536,1,1.149\n"
+                                              "0,B,6,0.2188,1,3.0000,0.0000,39.0000,0,39,0,2,39,45,1536,0,1.149\n"
+                                              "1,B,3,0.5,1,3.0,0.0,39.0,0,39,0,1,39,41,1536,0,0.5\n";
     duel_gen_row *rows;
     size_t n;
     char err[200];
     (void)state;
-    assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), 0);
+    /* a torn last row is refused, never dropped silently */
+    assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), -1);
+    assert_string_equal(err, "g.csv:5: the last row is cut short (no newline): resuming the run cuts it");
+    assert_null(rows);
+    /* a row missing in the middle */
+    assert_int_equal(duel_generations_parse("g.csv", gap, strlen(gap), &rows, &n, err, sizeof err), -1);
+    assert_string_equal(err, "g.csv:4: generation 1 B follows generation 0 B: rows are missing");
+    assert_int_equal(duel_generations_parse("g.csv", gap, strlen(gap) - 51, &rows, &n, err, sizeof err), 0);
+    assert_int_equal((int)n, 2);
+    free(rows);
+    assert_int_equal(duel_generations_parse("g.csv", text, (size_t)(strrchr(text, '\n') - text) + 1, &rows, &n, err,
+                                            sizeof err), 0);
     assert_int_equal((int)n, 3);
     assert_int_equal(rows[1].pop, 'B');
     assert_int_equal(rows[1].max_hidden, 2);

@@ -281,7 +281,7 @@ static uint32_t duel_insp_rd32(const uint8_t *p)
 static int duel_starts_with(const char *path, const char magic[8])
 {
     char head[8];
-    FILE *f = fopen(path, "rb");
+    FILE *f = duel_fopen_regular(path);
     int yes;
     if (f == NULL)
         return 0;

@@ -636,16 +636,17 @@ static int duel_parse_u32(const char *opt, const char *v, uint32_t lo, uint32_t 
 
 /* The lock of this process's run directory (-1: none), given back when the command ends: an MPI rank executes
  * one experiment task after another in one process. */
-static int duel_lock_fd = -1;
+static duel_lock duel_run_lock = {-1, -1};
 
 /* One process per run directory: a second run or resume there is refused. */
-static int duel_lock(const char *dir)
+static int duel_take_lock(const char *dir)
 {
-    duel_lock_fd = duel_dir_lock(dir);
-    if (duel_lock_fd >= 0)
+    if (duel_dir_lock(dir, &duel_run_lock) == 0)
         return 0;
     if (errno == EWOULDBLOCK)
         fprintf(stderr, "duel_evolve: %s is in use by another duel_evolve run or resume\n", dir);
+    else if (errno == ELOOP)
+        fprintf(stderr, "duel_evolve: %s/.lock is a symbolic link: refusing to follow it (remove it)\n", dir);
     else
         fprintf(stderr, "duel_evolve: %s/.lock: cannot open: %s\n", dir, strerror(errno));
     return -1;
@@ -692,7 +693,7 @@ static int duel_has_history(const char *dir, char *msg, size_t cap)
     DIR *d;
     struct dirent *e;
     duel_path(path, sizeof path, dir, "generations.csv");
-    if (duel_file_read(path, SIZE_MAX, &data, &len) == 0) {
+    if (duel_file_read(path, DUEL_GENERATIONS_MAX_FILE, &data, &len) == 0) {
         /* rows whose generation (the first field) is not 0 */
         for (i = 0; i < len; i++)
             if ((i == 0 || data[i - 1] == '\n') && data[i] >= '0' && data[i] <= '9' &&
@@ -971,22 +972,92 @@ static void duel_start_words(const duel_run *R, char *buf, size_t cap)
     }
 }
 
-/* A new run's directory: created and locked, refused when it holds a run
- * or the records of one, cleared of a run that died before its first
- * checkpoint, with config.ini written. 0, or the exit status after one line. */
+/* What a run directory may hold (docs/tools.md, "The run directory"), and so
+ * what an existing --out may hold for a new run to start in it. */
+static int duel_run_file_name(const char *name)
+{
+    static const char *const names[] = {"config.ini", "generations.csv", "dominance.csv", "strength.csv",
+                                        "checkpoint.bin", "ladder.csv", "compare-cache.csv", "log.txt",
+                                        "champions", "games", "opponents", ".lock"};
+    size_t i, n = strlen(name);
+    for (i = 0; i < sizeof names / sizeof names[0]; i++) {
+        size_t k = strlen(names[i]);
+        /* NAME, or NAME.tmp left by a killed writer */
+        if (strcmp(name, names[i]) == 0 || (n == k + 4 && strncmp(name, names[i], k) == 0 &&
+                                            strcmp(name + k, ".tmp") == 0))
+            return 1;
+    }
+    return 0;
+}
+
+/* Whether an existing directory may become a new run: empty, or a run's own
+ * files only, with a config.ini (if any) that a run wrote. 1, or 0 with the
+ * first foreign entry in what. */
+static int duel_dir_is_runs(const char *dir, char *what, size_t cap)
+{
+    char path[4200];
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    uint8_t *text;
+    size_t len;
+    int ok = 1;
+    if (d == NULL) {
+        snprintf(what, cap, "cannot be listed: %s", strerror(errno));
+        return 0;
+    }
+    while (ok && (e = readdir(d)) != NULL) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0 || duel_run_file_name(e->d_name))
+            continue;
+        snprintf(what, cap, "holds '%s', which is not a run's", e->d_name);
+        ok = 0;
+    }
+    closedir(d);
+    duel_path(path, sizeof path, dir, "config.ini");
+    if (ok && duel_file_read(path, 1u << 20, &text, &len) == 0) {
+        static const char mark[] = "; the effective configuration of this run";
+        ok = len >= sizeof mark - 1 && memcmp(text, mark, sizeof mark - 1) == 0;
+        if (!ok)
+            snprintf(what, cap, "holds a config.ini that a run did not write");
+        free(text);
+    } else if (ok && errno != ENOENT) {
+        snprintf(what, cap, "config.ini: %s", duel_file_strerror(errno));
+        ok = 0;
+    }
+    return ok;
+}
+
+/* A new run's directory: created and locked, refused when it holds a run,
+ * the records of one or anything not a run's, cleared of a run that died
+ * before its first checkpoint, with config.ini written. 0, or the exit
+ * status after one line. */
 static int duel_prepare_dir(duel_run *R)
 {
     static const char *const files[] = {"generations.csv", "dominance.csv", "strength.csv"};
     char err[600], path[4200];
     struct stat st;
     int i;
-    duel_path(path, sizeof path, R->dir, "champions");
-    if (duel_mkdir(R->dir) != 0 || duel_mkdir(path) != 0) {
+    /* looked at before anything is created in it, and again under the lock */
+    if (stat(R->dir, &st) == 0 && S_ISDIR(st.st_mode) && !duel_dir_is_runs(R->dir, err, sizeof err)) {
+        fprintf(stderr, "duel_evolve: %s is not empty and not a run directory (it %s): choose another --out\n",
+                R->dir, err);
+        return 2;
+    }
+    if (duel_mkdir(R->dir) != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R->dir, strerror(errno));
         return 2;
     }
-    if (duel_lock(R->dir) != 0)
+    if (duel_take_lock(R->dir) != 0)
         return 2;
+    if (!duel_dir_is_runs(R->dir, err, sizeof err)) {
+        fprintf(stderr, "duel_evolve: %s is not empty and not a run directory (it %s): choose another --out\n",
+                R->dir, err);
+        return 2;
+    }
+    duel_path(path, sizeof path, R->dir, "champions");
+    if (duel_mkdir(path) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
+        return 2;
+    }
     duel_path(path, sizeof path, R->dir, "checkpoint.bin");
     if (stat(path, &st) == 0) { /* checked under the lock: two runs cannot both pass */
         fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
@@ -1016,9 +1087,7 @@ static int duel_prepare_dir(duel_run *R)
 
 static void duel_unlock(void)
 {
-    if (duel_lock_fd >= 0)
-        close(duel_lock_fd);
-    duel_lock_fd = -1;
+    duel_dir_unlock(&duel_run_lock);
 }
 
 static int duel_run_main(int argc, char **argv);
@@ -1153,7 +1222,7 @@ static int duel_pop_ckpt_load(const char *path, neat_pop **out)
     if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
         if (errno == ENOENT)
             return 1;
-        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, errno == EFBIG ? "larger than 1 GB" : strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
     if (len >= 8 && memcmp(buf, "NEATCOEV", 8) == 0) {
@@ -1167,6 +1236,110 @@ static int duel_pop_ckpt_load(const char *path, neat_pop **out)
         fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(err));
     free(buf);
     return err ? -1 : 0;
+}
+
+/* dominance.csv as the checkpoint's dominance tournament writes it: every
+ * level, rebuilt on resume whatever became of the file (cut, deleted, a
+ * row torn or dropped), byte for byte what an uninterrupted run writes. 0,
+ * or the exit status after one line. */
+static int duel_rebuild_dominance(duel_run *R)
+{
+    char path[4200];
+    char *text = NULL;
+    size_t len = 0;
+    uint8_t *have = NULL;
+    size_t have_len = 0;
+    uint32_t k, n = neat_coev_dominant_count(R->coev);
+    FILE *mem = open_memstream(&text, &len);
+    int r = 0;
+    if (mem == NULL) {
+        fprintf(stderr, "duel_evolve: resume: out of memory\n");
+        return 1;
+    }
+    if (n > 0)
+        fputs(DUEL_DOMINANCE_HEADER, mem);
+    for (k = 0; k < n; k++) {
+        neat_dominant d;
+        char *row;
+        neat_coev_dominant(R->coev, k, &d);
+        row = duel_dominance_row_text(k + 1u, d.generation, duel_pop_name(d.pop)[0], neat_genome_hidden_count(d.genome),
+                                      neat_genome_enabled_count(d.genome), d.n_beaten, d.wins, d.losses);
+        if (row == NULL) {
+            r = 1;
+            break;
+        }
+        fputs(row, mem);
+        free(row);
+    }
+    if (fclose(mem) != 0 || r) {
+        fprintf(stderr, "duel_evolve: resume: out of memory\n");
+        free(text);
+        return 1;
+    }
+    duel_path(path, sizeof path, R->dir, "dominance.csv");
+    /* written only when it differs: an intact file is left alone; what is not a file is not ours to replace */
+    r = duel_file_read(path, DUEL_DOMINANCE_MAX_FILE, &have, &have_len);
+    if (r == 0 && have_len == len && (len == 0 || memcmp(have, text, len) == 0)) {
+        free(have);
+        free(text);
+        return 0;
+    }
+    if (r == 0)
+        free(have);
+    if (r != 0 && (errno == DUEL_ENOTREG || errno == EISDIR)) {
+        fprintf(stderr, "duel_evolve: %s: %s: refusing to replace it\n", path, duel_file_strerror(errno));
+        free(text);
+        return 2;
+    }
+    if (len == 0) {
+        r = unlink(path) != 0 && errno != ENOENT;
+    } else {
+        r = duel_file_replace(path, text, len) != 0;
+        if (r == 0)
+            duel_log(R, "resume: dominance.csv rebuilt from the checkpoint (%u level%s)", n, duel_s(n));
+    }
+    if (r)
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
+    free(text);
+    return r;
+}
+
+/* generations.csv must hold every generation before g (rows after the
+ * checkpoint were cut already): rows measured as they happened cannot be
+ * rebuilt from the checkpoint, so a run missing some is refused with what
+ * works. 0, or the exit status after one line. */
+static int duel_check_generations(duel_run *R, uint32_t g)
+{
+    duel_gen_row *rows;
+    size_t n, len, keep;
+    char err[700], path[4200];
+    uint8_t *text;
+    uint32_t done;
+    int r;
+    if (g == 0) /* nothing to hold yet (what is there is cut); a header cut short is written again */
+        return 0;
+    duel_path(path, sizeof path, R->dir, "generations.csv");
+    if (duel_file_read(path, DUEL_GENERATIONS_MAX_FILE, &text, &len) != 0) {
+        fprintf(stderr, "duel_evolve: %s: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", path, duel_file_strerror(errno));
+        return 2;
+    }
+    /* the complete rows: a torn last one belongs to the generation after the checkpoint, or is lost (below) */
+    for (keep = len; keep > 0 && text[keep - 1] != '\n'; keep--)
+        ;
+    r = duel_generations_parse(path, (const char *)text, keep, &rows, &n, err, sizeof err);
+    free(text);
+    if (r != 0) {
+        fprintf(stderr, "duel_evolve: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", err);
+        return 2;
+    }
+    done = n > 0 ? rows[n - 1].generation + (rows[n - 1].pop == 'B') : 0;
+    free(rows);
+    if (done < g) {
+        fprintf(stderr, "duel_evolve: %s holds %u generation%s but the checkpoint %u: " DUEL_GENERATIONS_LOST_ADVICE
+                        "\n", path, done, duel_s(done), g);
+        return 2;
+    }
+    return 0;
 }
 
 static int duel_resume_main(int argc, char **argv)
@@ -1217,7 +1390,7 @@ static int duel_resume_main(int argc, char **argv)
         return 2;
     }
     before = R.cfg;
-    if (duel_lock(R.dir) != 0)
+    if (duel_take_lock(R.dir) != 0)
         return 2;
     for (k = 0; k < n_sets; k++)
         if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
@@ -1334,23 +1507,26 @@ static int duel_resume_main(int argc, char **argv)
     /* rows written after the checkpoint belong to a generation that runs
      * again: generations.csv keeps the generations before it, dominance.csv
      * (whose first field is the level) the levels it holds */
+    /* nothing is cut before the records are known to be whole */
+    if (R.coev != NULL && (k = duel_check_generations(&R, g)) != 0) {
+        duel_run_free(&R);
+        return k;
+    }
     duel_path(path, sizeof path, R.dir, "generations.csv");
     if (duel_csv_keep_before(path, g) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
         duel_run_free(&R);
         return 1;
     }
     duel_path(path, sizeof path, R.dir, "strength.csv");
     if (duel_csv_keep_before(path, g) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
         duel_run_free(&R);
         return 1;
     }
-    duel_path(path, sizeof path, R.dir, "dominance.csv");
-    if (R.coev != NULL && duel_csv_keep_before(path, neat_coev_dominant_count(R.coev) + 1u) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, strerror(errno));
+    if (R.coev != NULL && (k = duel_rebuild_dominance(&R)) != 0) {
         duel_run_free(&R);
-        return 1;
+        return k;
     }
     for (k = 0; k < n_sets; k++)
         duel_log(&R, "resume: override %s", sets[k]);

@@ -122,7 +122,7 @@ int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t e
         snprintf(c->path, sizeof c->path, "%s", path);
         if (r == -1 && errno == ENOENT)
             return 0;
-        snprintf(err, err_len, "%s: cannot read: %s", path, errno == EFBIG ? "larger than 1 GB" : strerror(errno));
+        snprintf(err, err_len, "%s: cannot read: %s", path, errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
     r = duel_cmp_cache_parse(c, path, (const char *)text, len, err, err_len);

@@ -133,7 +133,7 @@ int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t 
         uint32_t ni, no;
         if (duel_file_read(cfg->start.path, DUEL_GENOME_MAX, &blob, &len) != 0) {
             snprintf(err, err_len, "%s: cannot read the start genome: %s", cfg->start.path,
-                     errno == EFBIG ? "larger than 64 MB" : strerror(errno));
+                     errno == EFBIG ? "larger than 64 MB" : duel_file_strerror(errno));
             return -1;
         }
         e = duel_genome_parse(cfg->start.path, blob, len, g, &ni, &no, err, err_len);
@@ -150,7 +150,7 @@ int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t 
         /* a blob is a few KB; a much larger file is not one */
         if (duel_file_read(cfg->start.path, 1u << 20, &blob, &len) != 0) {
             snprintf(err, err_len, "%s: cannot read the start blob: %s", cfg->start.path,
-                     errno == EFBIG ? "larger than 1 MB" : strerror(errno));
+                     errno == EFBIG ? "larger than 1 MB" : duel_file_strerror(errno));
             return -1;
         }
         e = neat_genome_from_blob(g, blob, len, NULL);

@@ -163,7 +163,7 @@ int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
         if (errno == ENOENT)
             return 1;
         fprintf(stderr, "duel_evolve: %s%s: cannot read: %s\n", prefix, path,
-                errno == EFBIG ? "larger than 1 GB" : strerror(errno));
+                errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
     err = neat_coev_load(out, buf, len, NULL, &off);

@@ -84,8 +84,12 @@ int duel_dominance_parse_scores(const char *name, const char *text, size_t len, 
         const char *e;
         line++;
         nl = (const char *)memchr(p, '\n', (size_t)(end - p));
-        if (nl == NULL)
-            break; /* a torn last row */
+        if (nl == NULL) {
+            /* never dropped silently: it may be the top level (a writer that died, or a cut copy) */
+            snprintf(err, err_len, "%s:%u: the last row is cut short (no newline): resuming the run rebuilds the "
+                                   "file from its checkpoint (duel_evolve resume RUN)", name, line);
+            goto bad;
+        }
         e = nl;
         memset(&r, 0, sizeof r);
         if (duel_dom_u32(&p, e, &r.level) || duel_dom_char(&p, e, ',') || duel_dom_u32(&p, e, &r.generation) ||
@@ -182,7 +186,7 @@ int duel_dominance_read_scores(const char *dir, duel_dominance_row **rows, uint3
     }
     r = duel_file_read(path, DUEL_DOMINANCE_MAX_FILE, &data, &len);
     if (r != 0) {
-        snprintf(err, err_len, "%s: %s: %s", path, r == -1 ? "cannot open" : "cannot read", strerror(errno));
+        snprintf(err, err_len, "%s: %s: %s", path, r == -1 ? "cannot open" : "cannot read", duel_file_strerror(errno));
         return -1;
     }
     r = duel_dominance_parse_scores(path, (const char *)data, len, rows, n, scores, err, err_len);

@@ -228,14 +228,28 @@ void duel_out_abort(duel_out *o)
 
 int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)
 {
-    FILE *f = fopen(path, "rb");
+    /* O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC), e = 0;
+    struct stat st;
     uint8_t *buf = NULL;
     size_t n = 0, cap = 0;
-    int e = 0;
-    if (f == NULL)
+    if (fd < 0)
         return -1;
+    if (fstat(fd, &st) != 0)
+        e = errno;
+    else if (S_ISDIR(st.st_mode))
+        e = EISDIR;
+    else if (!S_ISREG(st.st_mode))
+        e = DUEL_ENOTREG; /* a FIFO, a device (/dev/zero is endless), a socket */
+    else if ((uint64_t)st.st_size > (uint64_t)max)
+        e = EFBIG;
+    if (e) {
+        close(fd);
+        errno = e;
+        return -2;
+    }
     for (;;) {
-        size_t got;
+        ssize_t got;
         if (n == cap) {
             uint8_t *nb;
             cap = cap ? cap * 2 : 65536;
@@ -246,19 +260,22 @@ int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)
             }
             buf = nb;
         }
-        got = fread(buf + n, 1, cap - n, f);
-        n += got;
+        got = read(fd, buf + n, cap - n);
+        if (got < 0) {
+            if (errno == EINTR)
+                continue;
+            e = errno == EAGAIN ? EIO : errno;
+            break;
+        }
+        n += (size_t)got;
         if (n > max) {
-            e = EFBIG; /* found out after at most max + 64 KiB, however large the file */
+            e = EFBIG; /* a file still growing: found out after at most max + 64 KiB */
             break;
         }
-        if (got == 0) {
-            if (ferror(f))
-                e = EIO;
+        if (got == 0)
             break;
-        }
     }
-    fclose(f);
+    close(fd);
     if (e) {
         free(buf);
         errno = e;
@@ -267,6 +284,38 @@ int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len)
     *data = buf;
     *len = n;
     return 0;
+}
+
+FILE *duel_fopen_regular(const char *path)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC), e = 0;
+    struct stat st;
+    FILE *f;
+    if (fd < 0)
+        return NULL;
+    if (fstat(fd, &st) != 0)
+        e = errno;
+    else if (S_ISDIR(st.st_mode))
+        e = EISDIR;
+    else if (!S_ISREG(st.st_mode))
+        e = DUEL_ENOTREG;
+    else if (fcntl(fd, F_SETFL, O_RDONLY) != 0) /* blocking reads from here on, as from fopen */
+        e = errno;
+    if (e == 0 && (f = fdopen(fd, "rb")) != NULL)
+        return f;
+    e = e ? e : errno;
+    close(fd);
+    errno = e;
+    return NULL;
+}
+
+const char *duel_file_strerror(int err)
+{
+    if (err == DUEL_ENOTREG)
+        return "not a regular file";
+    if (err == EFBIG)
+        return "too large";
+    return strerror(err);
 }
 
 int duel_file_append(const char *path, const char *text)
@@ -294,7 +343,7 @@ int duel_csv_keep_before(const char *path, uint32_t generation)
     uint8_t *data;
     size_t len, at = 0, keep = 0;
     int first = 1, r;
-    if (duel_file_read(path, SIZE_MAX, &data, &len) != 0)
+    if (duel_file_read(path, DUEL_CSV_MAX_FILE, &data, &len) != 0)
         return errno == ENOENT ? 0 : -1;
     while (at < len) {
         const uint8_t *nl = (const uint8_t *)memchr(data + at, '\n', len - at);
@@ -368,19 +417,66 @@ int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
     return r == -1 ? 2 : 1;
 }
 
-int duel_dir_lock(const char *dir)
+int duel_dir_lock(const char *dir, duel_lock *lk)
 {
     char path[4200];
-    int fd;
-    snprintf(path, sizeof path, "%s/.lock", dir);
-    fd = open(path, O_RDWR | O_CREAT, 0644);
-    if (fd < 0)
-        return -1;
-    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
-        int e = errno;
-        close(fd);
-        errno = e;
+    struct stat a, b;
+    int tries;
+    lk->dir_fd = lk->file_fd = -1;
+    if ((size_t)snprintf(path, sizeof path, "%s/.lock", dir) >= sizeof path) {
+        errno = ENAMETOOLONG;
         return -1;
     }
-    return fd; /* held until the process ends, however it ends */
+    /* the directory itself: deleting or replacing .lock cannot let a second writer in */
+    lk->dir_fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (lk->dir_fd < 0)
+        return -1;
+    if (flock(lk->dir_fd, LOCK_EX | LOCK_NB) != 0) {
+        int e = errno;
+        if (e == EWOULDBLOCK) {
+            duel_dir_unlock(lk);
+            errno = e;
+            return -1;
+        }
+        /* a file system that cannot lock a directory (NFS emulates flock with write locks): .lock alone */
+        close(lk->dir_fd);
+        lk->dir_fd = -1;
+    }
+    for (tries = 0; tries < 8; tries++) {
+        /* O_NOFOLLOW: a .lock that is a symbolic link is refused, its target never created */
+        lk->file_fd = open(path, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+        if (lk->file_fd < 0 || flock(lk->file_fd, LOCK_EX | LOCK_NB) != 0) {
+            int e = errno;
+            duel_dir_unlock(lk);
+            errno = e;
+            return -1;
+        }
+        /* still the file named .lock (not one deleted or replaced while we waited for it)? */
+        if (fstat(lk->file_fd, &a) == 0 && lstat(path, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino)
+            return 0; /* held until duel_dir_unlock or the process ends, however it ends */
+        close(lk->file_fd);
+        lk->file_fd = -1;
+    }
+    duel_dir_unlock(lk);
+    errno = EWOULDBLOCK;
+    return -1;
+}
+
+int duel_dir_lock_held(const duel_lock *lk, const char *dir)
+{
+    char path[4200];
+    struct stat a, b;
+    if (lk->file_fd < 0)
+        return 0;
+    snprintf(path, sizeof path, "%s/.lock", dir);
+    return fstat(lk->file_fd, &a) == 0 && lstat(path, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+void duel_dir_unlock(duel_lock *lk)
+{
+    if (lk->file_fd >= 0)
+        close(lk->file_fd);
+    if (lk->dir_fd >= 0)
+        close(lk->dir_fd);
+    lk->dir_fd = lk->file_fd = -1;
 }

@@ -52,14 +52,28 @@ int duel_file_commit(const char *tmp, const char *path);
 /* fsync of the directory that holds path. 0 or -1 (errno set). */
 int duel_dir_sync(const char *path);
 
+/* errno of a read refused because the path is not a regular file (a FIFO,
+ * a device, a socket): no reader waits on a pipe or reads an endless device. */
+#define DUEL_ENOTREG ENOSTR
+
 /* The whole file, at most max bytes, in a malloc'd buffer. 0; -1 when it
  * cannot be opened (errno set; ENOENT when missing); -2 when it cannot be
- * read (errno set; EFBIG when it is larger than max). */
+ * read (errno set; EFBIG when it is larger than max, EISDIR for a
+ * directory, DUEL_ENOTREG for anything else not a regular file). */
 int duel_file_read(const char *path, size_t max, uint8_t **data, size_t *len);
+/* fopen(path, "rb") of a regular file only (never waiting on a FIFO), or
+ * NULL with errno (EISDIR, DUEL_ENOTREG, or open's). */
+FILE *duel_fopen_regular(const char *path);
+/* strerror, with "not a regular file" for DUEL_ENOTREG and "too large" for EFBIG. */
+const char *duel_file_strerror(int err);
 
 /* Appends text and flushes it to the disk (and the directory, when this
  * created the file). 0 or -1. */
 int duel_file_append(const char *path, const char *text);
+
+/* The most a run directory's CSV record is read to (a 500-generation run's
+ * generations.csv is about 100 KB): a link to an endless file is refused. */
+#define DUEL_CSV_MAX_FILE ((size_t)256 << 20)
 
 /* Keeps the header and the complete rows whose first field (a generation
  * number) is below generation; drops the rest, including a torn last row.
@@ -72,10 +86,20 @@ int duel_csv_keep_before(const char *path, uint32_t generation);
 typedef void (*duel_write_fn)(FILE *f, const void *ctx);
 int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx);
 
-/* Takes DIR/.lock exclusively for the rest of the process (the kernel drops
- * it when the process ends, even by kill -9). The descriptor, or -1 with
- * errno EWOULDBLOCK when another process holds it. */
-int duel_dir_lock(const char *dir);
+/* A working directory's lock: the directory itself and DIR/.lock, both
+ * flock'ed (the kernel drops them when the process ends, even by kill -9).
+ * The directory's lock keeps a second writer out even when .lock is deleted;
+ * where a file system cannot lock a directory, .lock alone does. */
+typedef struct duel_lock {
+    int dir_fd, file_fd;
+} duel_lock;
+/* Takes DIR's lock. 0, or -1 with errno EWOULDBLOCK when another process
+ * holds it, ELOOP when .lock is a symbolic link (never followed). */
+int duel_dir_lock(const char *dir, duel_lock *lk);
+/* 1 while DIR/.lock is still the file lk locked (not deleted or replaced). */
+int duel_dir_lock_held(const duel_lock *lk, const char *dir);
+/* Gives the lock back (nothing when not held). */
+void duel_dir_unlock(duel_lock *lk);
 
 /* mkdir -p: the parents too, and an existing directory is fine. 0 or -1. */
 int duel_mkdir(const char *path);

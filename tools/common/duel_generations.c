@@ -95,8 +95,24 @@ int duel_generations_parse(const char *name, const char *text, size_t len, duel_
             }
             out = nr;
         }
+        /* a row lost in the middle (a cut or edited copy) is found here, not later as a wrong figure */
+        if (count == 0 ? r.generation != 0 || r.pop != 'A'
+                       : r.pop == out[count - 1].pop ||
+                             r.generation != out[count - 1].generation + (out[count - 1].pop == 'B')) {
+            snprintf(err, err_len, "%s:%u: generation %u %c follows generation %u %c: rows are missing", name, line,
+                     r.generation, r.pop, count ? out[count - 1].generation : 0, count ? out[count - 1].pop : '-');
+            free(out);
+            return -1;
+        }
         out[count++] = r;
         p = nl + 1;
+    }
+    if (p < end) {
+        /* never dropped silently: a writer that died mid-row, or a cut copy */
+        snprintf(err, err_len, "%s:%u: the last row is cut short (no newline): resuming the run cuts it", name,
+                 line + 1);
+        free(out);
+        return -1;
     }
     *rows = out;
     *n = count;
@@ -114,7 +130,7 @@ int duel_generations_read(const char *dir, duel_gen_row **rows, size_t *n, char 
     snprintf(path, sizeof path, "%s/generations.csv", dir);
     r = duel_file_read(path, DUEL_GENERATIONS_MAX_FILE, &data, &len);
     if (r != 0) {
-        snprintf(err, err_len, "%s: %s", path, strerror(errno));
+        snprintf(err, err_len, "%s: %s", path, duel_file_strerror(errno));
         return -1;
     }
     r = duel_generations_parse(path, (const char *)data, len, rows, n, err, err_len);

@@ -11,6 +11,13 @@
 #define DUEL_GENERATIONS_FIELDS 17
 #define DUEL_GENERATIONS_MAX_FILE (256u << 20) /* a 500-generation run writes about 100 KB */
 
+/* What to do about rows that are lost: measured as they happened, they cannot be rebuilt from the checkpoint;
+ * a run plays again to the same rows (the same seed and configuration: config.ini). */
+#define DUEL_GENERATIONS_LOST_ADVICE                                                                                  \
+    "rows lost cannot be rebuilt from the checkpoint: restore the file, or play the run again (duel_evolve run "     \
+    "--config RUN/config.ini --out NEW_DIR gives the same rows; in an experiment, delete the run's directory and "    \
+    "duel_evolve experiment resume plays it again)"
+
 typedef struct duel_gen_row {
     uint32_t generation;
     char pop;                      /* 'A' or 'B' */

@@ -16,7 +16,7 @@ int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint3
     neat_genome_init(g);
     if (r != 0) {
         fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", path, r == -1 ? "open" : "read",
-                errno == EFBIG ? "larger than 64 MB" : strerror(errno));
+                errno == EFBIG ? "larger than 64 MB" : duel_file_strerror(errno));
         return -1;
     }
     r = duel_genome_parse(path, buf, len, g, n_inputs, n_outputs, err, sizeof err);

@@ -19,15 +19,18 @@
 
 /* DIR is a run that has played every generation of its config.ini, and its
  * dominance.csv holds the levels its checkpoint does. */
-/* The generations generations.csv records in full (both populations' rows), 0 when it cannot be read. */
-static uint32_t duel_perf_csv_generations(const char *dir)
+/* The generations generations.csv records in full (both populations' rows), or UINT32_MAX after one line
+ * when it cannot be read or is damaged. */
+static uint32_t duel_perf_csv_generations(const char *dir, const char *pre)
 {
     duel_gen_row *rows;
     size_t n;
     char err[4400];
     uint32_t done;
-    if (duel_generations_read(dir, &rows, &n, err, sizeof err) != 0)
-        return 0;
+    if (duel_generations_read(dir, &rows, &n, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", pre, err);
+        return UINT32_MAX;
+    }
     done = duel_generations_done(rows, n);
     free(rows);
     return done;
@@ -74,7 +77,9 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         if (e != 0)
             return -1;
     } else {
-        gen = duel_perf_csv_generations(dir);
+        gen = duel_perf_csv_generations(dir, pre);
+        if (gen == UINT32_MAX)
+            return -1;
         doms = UINT32_MAX;
         r->world = cfg.world;
     }

@@ -121,7 +121,8 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
     char *text = duel_plan_text(p);
     uint8_t *have;
     size_t len;
-    int fd, rc;
+    static duel_lock lock = {-1, -1}; /* held until the process ends */
+    int rc;
     if (text == NULL) {
         fprintf(stderr, "duel_evolve: experiment: out of memory\n");
         return 1;
@@ -147,10 +148,11 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
         free(text);
         return 2;
     }
-    fd = duel_dir_lock(".");
-    if (fd < 0) {
+    if (lock.dir_fd < 0 && lock.file_fd < 0 && duel_dir_lock(".", &lock) != 0) {
         fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir,
-                errno == EWOULDBLOCK ? "another duel_evolve experiment is working in it" : strerror(errno));
+                errno == EWOULDBLOCK ? "another duel_evolve experiment is working in it"
+                : errno == ELOOP     ? ".lock is a symbolic link: refusing to follow it (remove it)"
+                                     : strerror(errno));
         free(text);
         return 2;
     }

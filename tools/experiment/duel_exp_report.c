@@ -169,7 +169,7 @@ static int rep_read_run(rep *R, rep_run *r)
         duel_gen_row *g;
         size_t n, k;
         if (duel_generations_read(r->dir, &g, &n, err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: experiment: %s/%s\n", R->dir, err);
+            fprintf(stderr, "duel_evolve: experiment: %s/%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", R->dir, err);
             return 2;
         }
         for (k = 0; k < n; k++)
@@ -651,7 +651,7 @@ static int rep_fig7_random(const rep *R, const char *path)
             for (g = 0; g < 4 * x.rr.gmax; g++)
                 x.rr.cur[g] = g % 2 == 0 ? -1.0 : 0.0;
             if (duel_generations_read(R->runs[R->m[i].first + k].dir, &rows, &n, err, sizeof err) != 0) {
-                fprintf(stderr, "duel_evolve: experiment: %s\n", err);
+                fprintf(stderr, "duel_evolve: experiment: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", err);
                 free(x.rr.sum);
                 free(x.rr.cur);
                 return 1;

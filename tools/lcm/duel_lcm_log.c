@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "duel_files.h"
 #include "duel_lcm.h"
 #include "duel_replay.h"
 
@@ -29,9 +30,9 @@ int duel_lcm_reader_open(duel_lcm_reader *r, const char *path, char *err, size_t
     long size;
     memset(r, 0, sizeof *r);
     snprintf(r->path, sizeof r->path, "%s", path);
-    r->f = fopen(path, "rb");
+    r->f = duel_fopen_regular(path); /* a FIFO would block, a device may be endless */
     if (r->f == NULL) {
-        snprintf(err, err_len, "%s: cannot open: %s", path, strerror(errno));
+        snprintf(err, err_len, "%s: cannot open: %s", path, duel_file_strerror(errno));
         return -1;
     }
     if (fseek(r->f, 0, SEEK_END) != 0 || (size = ftell(r->f)) < 0 || fseek(r->f, 0, SEEK_SET) != 0) {
