@@ -126,7 +126,11 @@ render-net)
   command -v dot > /dev/null || { echo "graphviz not installed: skipped"; exit 77; }
   "$bench" --write-blobs "$tmp" > /dev/null
   echo old > "$tmp/net.png"
-  "$duel" render-net "$tmp/net202a.blob" --out "$tmp/net.png"
+  expect_bad "net.png exists and is not a picture from duel_evolve render-net: refusing to replace it" \
+    render-net "$tmp/net202a.blob" --out "$tmp/net.png"
+  [ "$(cat "$tmp/net.png")" = old ] || fail "render-net replaced a file that is not its picture"
+  "$duel" render-net "$tmp/net202a.blob" --out "$tmp/net.png" --force
+  "$duel" render-net "$tmp/net202a.blob" --out "$tmp/net.png" # its own picture: replaced
   read -r w h < <(png_size "$tmp/net.png")
   [ "$w" -gt 200 ] && [ "$h" -gt 200 ] || fail "net.png is $w x $h"
   # the same picture as dot -Tpng on the dot command's output

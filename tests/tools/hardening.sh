@@ -82,9 +82,10 @@ lost-checkpoint)
   ;;
 trace)
   # --trace goes through TRACE.tmp: a failing --lcm-log leaves an existing trace as it was
-  printf 'keep\n' > "$tmp/t.csv"
+  "$duel" play builtin:idle builtin:spinner --trace "$tmp/t.csv" > /dev/null
+  cp "$tmp/t.csv" "$tmp/keep.csv"
   expect_bad "nodir/x.lcm: cannot write" play builtin:idle builtin:forager --trace "$tmp/t.csv" --lcm-log "$tmp/nodir/x.lcm"
-  [ "$(cat "$tmp/t.csv")" = keep ] || fail "the trace was overwritten by a failed play"
+  cmp -s "$tmp/keep.csv" "$tmp/t.csv" || fail "the trace was overwritten by a failed play"
   [ ! -e "$tmp/t.csv.tmp" ] || fail "t.csv.tmp left behind"
   # a stale TRACE.tmp of a killed play is taken over
   printf 'stale' > "$tmp/t.csv.tmp"
@@ -99,7 +100,7 @@ trace)
 links)
   # an output named by a symbolic link replaces the file it points to and keeps the link; one that is no
   # regular file (a pipe, a device) is written in place, never renamed over (as root, /dev/stdout once was)
-  printf 'old\n' > "$tmp/real.csv"
+  : > "$tmp/real.csv" # empty: nothing to lose
   ln -s real.csv "$tmp/link.csv"
   "$duel" play builtin:idle builtin:forager --trace "$tmp/link.csv" > /dev/null
   [ -L "$tmp/link.csv" ] || fail "the link was replaced by a file"
@@ -114,10 +115,11 @@ links)
   wait "$reader"
   [ -p "$tmp/fifo" ] || fail "the FIFO was replaced by a file"
   cmp -s "$tmp/from-fifo.csv" "$tmp/real.csv" || fail "the trace through the FIFO differs"
-  ln -s "$tmp/real.csv" "$tmp/link2.csv"
+  : > "$tmp/real2.c"
+  ln -s "$tmp/real2.c" "$tmp/link2.c"
   "$duel" run --config "$cfg" --out "$tmp/r" --generations 1 --quiet
-  "$duel" export "$tmp/r/champions/gen-00000.blob" --c-array x -o "$tmp/link2.csv"
-  [ -L "$tmp/link2.csv" ] && grep -q "x\[" "$tmp/real.csv" || fail "export -o through a link"
+  "$duel" export "$tmp/r/champions/gen-00000.blob" --c-array x -o "$tmp/link2.c"
+  [ -L "$tmp/link2.c" ] && grep -q "x\[" "$tmp/real2.c" || fail "export -o through a link"
   # a symbolic link planted where a temporary goes is removed, not followed
   printf 'keep\n' > "$tmp/victim"
   ln -s "$tmp/victim" "$tmp/t.csv.tmp"

@@ -152,6 +152,96 @@ records)
   "$duel" resume "$tmp/x/runs/complexify-2" --quiet
   "$duel" experiment report "$tmp/x" > /dev/null
   ;;
+outputs)
+  # class 1: an output that exists and is not recognisably this command's is refused (exit 2) unless --force; an
+  # output that is one of the command's inputs is refused even then
+  "$duel" run --config "$cfg" --out "$tmp/a" --generations 3 --quiet
+  "$duel" run --config "$cfg" --out "$tmp/b" --generations 3 --seed 2 --quiet
+  blob=$tmp/a/champions/gen-00001.blob
+  printf 'my data\n' > "$tmp/mine.txt"
+  cp "$tmp/a/checkpoint.bin" "$tmp/ckpt.keep"
+  mine() { [ "$(cat "$tmp/mine.txt")" = "my data" ] || fail "$1 replaced a file that is not its output"; }
+  # compare: the cache, the CSV, the JSON
+  expect_bad "compare: --cache .*a/checkpoint.bin is a file of the run .*a it reads: refusing to write over it" \
+    compare "$tmp/a" --against "$tmp/b" --cache "$tmp/a/checkpoint.bin" --force
+  cmp -s "$tmp/ckpt.keep" "$tmp/a/checkpoint.bin" || fail "compare --cache replaced a checkpoint"
+  expect_bad "compare: --cache .*mine.txt exists and is not a compare cache: refusing to replace it (--force replaces it)" \
+    compare "$tmp/a" --against "$tmp/b" --cache "$tmp/mine.txt"
+  mine "compare --cache"
+  expect_bad "compare: --csv .*mine.txt exists and is not a compare CSV" compare "$tmp/a" --against "$tmp/b" --csv "$tmp/mine.txt"
+  expect_bad "compare: --json .*mine.txt exists and is not a compare JSON file" \
+    compare "$tmp/a" --against "$tmp/b" --json "$tmp/mine.txt"
+  mine "compare --csv/--json"
+  expect_bad "compare: --csv .*a/dominance.csv is a file of the run" compare "$tmp/a" --against "$tmp/b" --csv "$tmp/a/dominance.csv" --force
+  expect_bad "compare: --csv .*c.csv is also one of its inputs or outputs" compare "$tmp/a" --against "$tmp/b" --csv "$tmp/c.csv" --json "$tmp/c.csv"
+  "$duel" compare "$tmp/a" --against "$tmp/b" --csv "$tmp/c.csv" --json "$tmp/c.json" --cache "$tmp/cache.csv" > /dev/null
+  "$duel" compare "$tmp/a" --against "$tmp/b" --csv "$tmp/c.csv" --json "$tmp/c.json" --cache "$tmp/cache.csv" > /dev/null ||
+    fail "compare refused its own outputs"
+  cp "$tmp/mine.txt" "$tmp/other.txt"
+  "$duel" compare "$tmp/a" --against "$tmp/b" --cache "$tmp/other.txt" --force > /dev/null || fail "--force"
+  head -1 "$tmp/other.txt" | grep -q "^# duel_evolve compare cache" || fail "--force did not replace the file"
+  # the cache: a CRLF copy reads the same; two different results for one comparison, or a cut line, are refused
+  sed 's/$/\r/' "$tmp/cache.csv" > "$tmp/crlf.csv"
+  "$duel" compare "$tmp/a" --against "$tmp/b" --cache "$tmp/crlf.csv" | grep -q "(0 played, [1-9][0-9]* from the cache)" ||
+    fail "a CRLF cache was not read"
+  { cat "$tmp/cache.csv"; tail -1 "$tmp/cache.csv" | awk -F, -v OFS=, '{ $4 = $4 + 1; $5 = $5 - 1; print }'; } > "$tmp/dup.csv"
+  expect_bad "dup.csv:[0-9]*: a second, different result for the comparison of" compare "$tmp/a" --against "$tmp/b" --cache "$tmp/dup.csv"
+  head -c -1 "$tmp/cache.csv" > "$tmp/cut.csv"
+  expect_bad "cut.csv:[0-9]*: the last line is cut short" compare "$tmp/a" --against "$tmp/b" --cache "$tmp/cut.csv"
+  # the per-run cache, and ladder's outputs
+  cp "$tmp/mine.txt" "$tmp/b/compare-cache.csv"
+  expect_bad "b/compare-cache.csv: not a compare cache this version reads" compare "$tmp/b" --against "$tmp/a"
+  cmp -s "$tmp/mine.txt" "$tmp/b/compare-cache.csv" || fail "a foreign per-run cache was replaced"
+  rm "$tmp/b/compare-cache.csv"
+  expect_bad "ladder: --csv .*mine.txt exists and is not a ladder CSV" ladder "$tmp/a" --top --csv "$tmp/mine.txt"
+  mine "ladder --csv"
+  cp "$tmp/mine.txt" "$tmp/a/ladder.csv"
+  expect_bad "ladder: its .*a/ladder.csv exists and is not a ladder CSV" ladder "$tmp/a"
+  expect_bad "ladder: --csv .*a/generations.csv is a file of the run" ladder "$tmp/a" --csv "$tmp/a/generations.csv" --force
+  "$duel" ladder "$tmp/a" --force > /dev/null
+  "$duel" ladder "$tmp/a" > /dev/null || fail "ladder refused its own ladder.csv"
+  # one-input commands: never over the input, never over a foreign file
+  cp "$blob" "$tmp/in.blob"
+  expect_bad "dot: -o .*in.blob is also one of its inputs or outputs" dot "$tmp/in.blob" -o "$tmp/in.blob" --force
+  ln -s in.blob "$tmp/alias.blob"
+  expect_bad "dot: -o .*alias.blob is also one of its inputs or outputs" dot "$tmp/in.blob" -o "$tmp/alias.blob" --force
+  expect_bad "dot: -o .*mine.txt exists and is not a Graphviz file" dot "$tmp/in.blob" -o "$tmp/mine.txt"
+  expect_bad "export: -o .*in.blob is also one of its inputs or outputs" export "$tmp/in.blob" --c-array x -o "$tmp/in.blob" --force
+  expect_bad "export: -o .*x.c is also one of its inputs or outputs" export "$tmp/in.blob" --c-array x -o "$tmp/x.c" --header "$tmp/x.c"
+  expect_bad "export: -o .*mine.txt exists and is not a C file from duel_evolve export" export "$tmp/in.blob" --c-array x -o "$tmp/mine.txt"
+  expect_bad "export: -o .*mine.txt exists and is not a world's bytes" export --world v1 --raw -o "$tmp/mine.txt"
+  cmp -s "$blob" "$tmp/in.blob" || fail "an input was changed"
+  mine "dot/export"
+  "$duel" export "$tmp/in.blob" --c-array x -o "$tmp/x.c" --header "$tmp/x.h"
+  "$duel" export "$tmp/in.blob" --c-array x -o "$tmp/x.c" --header "$tmp/x.h" || fail "export refused its own files"
+  "$duel" export --world v1 --raw -o "$tmp/w.bin" && "$duel" export --world v1 --raw -o "$tmp/w.bin" || fail "--raw twice"
+  expect_bad "play: --trace .*in.blob is also one of its inputs or outputs" play "$tmp/in.blob" builtin:forager --trace "$tmp/in.blob" --force
+  expect_bad "play: --trace .*mine.txt exists and is not a game trace" play "$tmp/in.blob" builtin:forager --trace "$tmp/mine.txt"
+  expect_bad "play: --lcm-log .*mine.txt exists and is not this project's LCM event log" \
+    play "$tmp/in.blob" builtin:forager --lcm-log "$tmp/mine.txt"
+  expect_bad "node world: --lcm-log .*mine.txt exists and is not this project's LCM event log" \
+    node world --food 3 --lcm memq:// --lcm-log "$tmp/mine.txt"
+  mine "play/node"
+  "$duel" play "$tmp/in.blob" builtin:forager --lcm-log "$tmp/g.lcm" > /dev/null
+  "$duel" play "$tmp/in.blob" builtin:forager --lcm-log "$tmp/g.lcm" > /dev/null || fail "play refused its own log"
+  # render: frames and the video
+  mkdir "$tmp/frames"
+  cp "$tmp/mine.txt" "$tmp/frames/frame-00002.png"
+  expect_bad "render: --out .*frames/frame-00002.png exists and is not a frame from duel_evolve render" \
+    render "$tmp/in.blob" builtin:forager --out "$tmp/frames" --every 300
+  [ "$(ls "$tmp/frames")" = frame-00002.png ] || fail "render wrote frames before refusing: $(ls "$tmp/frames")"
+  rm "$tmp/frames/frame-00002.png"
+  "$duel" render "$tmp/in.blob" builtin:forager --out "$tmp/frames" --every 300 > /dev/null
+  "$duel" render "$tmp/in.blob" builtin:forager --out "$tmp/frames" --every 300 > /dev/null || fail "render refused its frames"
+  if command -v ffmpeg > /dev/null; then
+    expect_bad "render: --video .*mine.txt exists and is not a video from duel_evolve render" \
+      render "$tmp/in.blob" builtin:forager --out "$tmp/frames" --every 300 --video "$tmp/mine.txt"
+    mine "render --video"
+    "$duel" render "$tmp/in.blob" builtin:forager --out "$tmp/frames" --every 300 --video "$tmp/v.mp4" > /dev/null
+    "$duel" render "$tmp/in.blob" builtin:forager --out "$tmp/frames" --every 300 --video "$tmp/v.mp4" > /dev/null ||
+      fail "render refused its own video"
+  fi
+  ;;
 *)
   fail "unknown check $what"
   ;;

@@ -10,16 +10,18 @@
 
 #include "duel_cli.h"
 #include "duel_json.h"
+#include "duel_cmp_cache.h"
 #include "duel_config.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
+#include "duel_outputs.h"
 #include "duel_perf.h"
 
 typedef struct duel_cmp_stats {
     double mean, sd;
 } duel_cmp_stats;
 
-#define DUEL_CMP_USAGE "usage: duel_evolve compare RUN... --against RUN... [--threads T] [--json FILE] [--csv FILE] [--cache FILE]"
+#define DUEL_CMP_USAGE "usage: duel_evolve compare RUN... --against RUN... [--threads T] [--json FILE] [--csv FILE] [--cache FILE] [--force]"
 
 /* mean and sample standard deviation (0 for one value) */
 static duel_cmp_stats duel_cmp_stat(const double *v, size_t n)
@@ -137,7 +139,7 @@ int duel_cmd_compare(int argc, char **argv)
     duel_perf_opts o;
     const char *json = NULL, *csv = NULL, *cache_path = NULL, **cand = NULL, **against = NULL;
     uint32_t threads = 0, n_against = 0, n_cand = 0, i;
-    int in_against = 0, rc = 2;
+    int in_against = 0, rc = 2, force = 0;
 
     memset(&m, 0, sizeof m);
     cand = (const char **)calloc((size_t)argc + 1, sizeof *cand);
@@ -150,6 +152,8 @@ int duel_cmd_compare(int argc, char **argv)
         const char *a = argv[i], *v = i + 1 < (uint32_t)argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--against") == 0) {
             in_against = 1;
+        } else if (strcmp(a, "--force") == 0) {
+            force = 1;
         } else if (strcmp(a, "--threads") == 0 || strcmp(a, "--json") == 0 || strcmp(a, "--csv") == 0 ||
                    strcmp(a, "--cache") == 0) {
             if (v == NULL) {
@@ -183,7 +187,36 @@ int duel_cmd_compare(int argc, char **argv)
             cand[n_cand++] = a;
         }
     }
+    /* before any game: outputs that would replace an input or a file that is not this command's are refused */
+    {
+        static const duel_out_kind csv_kind = {"a compare CSV", "candidate,candidate_level,", NULL};
+        static const duel_out_kind json_kind = {"a compare JSON file", "{\n  \"games_per_comparison\"", NULL};
+        static const duel_out_kind cache_kind = {"a compare cache", NULL, duel_cmp_cache_is};
+        const char **in = (const char **)calloc((size_t)n_cand + n_against + 3, sizeof *in);
+        uint32_t n_in = 0;
+        int bad;
+        if (in == NULL) {
+            fprintf(stderr, "duel_evolve: compare: out of memory\n");
+            goto out;
+        }
+        for (i = 0; i < n_cand; i++)
+            in[n_in++] = cand[i];
+        for (i = 0; i < n_against; i++)
+            in[n_in++] = against[i];
+        in[n_in] = json;
+        in[n_in + 1] = cache_path;
+        bad = csv != NULL && duel_out_allowed("compare", "--csv", csv, &csv_kind, force, in, n_in + 2) != 0;
+        in[n_in] = csv;
+        bad = bad || (json != NULL && duel_out_allowed("compare", "--json", json, &json_kind, force, in, n_in + 2) != 0);
+        in[n_in + 1] = json;
+        bad = bad || (cache_path != NULL &&
+                      duel_out_allowed("compare", "--cache", cache_path, &cache_kind, force, in, n_in + 2) != 0);
+        free(in);
+        if (bad)
+            goto out;
+    }
     memset(&o, 0, sizeof o);
+    o.force = force;
     o.threads = threads;
     o.cache_path = cache_path;
     o.mode = DUEL_PERF_PLAY;

@@ -8,6 +8,7 @@
 #include "duel_cli.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
+#include "duel_outputs.h"
 #include "neat_config.h"
 
 /* Names of the duel's inputs (docs/duelsim.md, sensors in the spec's order;
@@ -590,7 +591,7 @@ int duel_cmd_dot(int argc, char **argv)
     duel_dot_opts o = {0};
     duel_dot_job job;
     const char *blob = NULL, *out = NULL;
-    int i, rc = 0;
+    int i, rc = 0, force = 0;
 
     for (i = 0; i < argc; i++) {
         if (strcmp(argv[i], "-o") == 0) {
@@ -599,6 +600,8 @@ int duel_cmd_dot(int argc, char **argv)
                 return 2;
             }
             out = argv[++i];
+        } else if (strcmp(argv[i], "--force") == 0) {
+            force = 1;
         } else if (strcmp(argv[i], "--min-weight") == 0) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "duel_evolve: dot: --min-weight needs a value\n");
@@ -607,15 +610,20 @@ int duel_cmd_dot(int argc, char **argv)
             if (duel_dot_parse_min_weight("dot", argv[++i], &o) != 0)
                 return 2;
         } else if (argv[i][0] == '-' || blob != NULL) {
-            fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot] [--min-weight W]\n");
+            fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot [--force]] [--min-weight W]\n");
             return 2;
         } else {
             blob = argv[i];
         }
     }
     if (blob == NULL) {
-        fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot] [--min-weight W]\n");
+        fprintf(stderr, "usage: duel_evolve dot BLOB [-o FILE.dot [--force]] [--min-weight W]\n");
         return 2;
+    }
+    if (out != NULL) {
+        static const duel_out_kind kind = {"a Graphviz file from duel_evolve dot", "/* duel_evolve dot:", NULL};
+        if (duel_out_allowed("dot", "-o", out, &kind, force, &blob, 1) != 0)
+            return 2;
     }
     if (duel_insp_open(&x, blob) != 0)
         return 2;

@@ -7,19 +7,20 @@
 #include "duel_cli.h"
 #include "duel_files.h"
 #include "duel_json.h"
+#include "duel_outputs.h"
 #include "duel_levels.h"
 #include "duel_pairs.h"
 #include "duel_world_cfg.h"
 
 #define DUEL_LADDER_USAGE                                                                                          \
     "usage: duel_evolve ladder DIR [--top | --levels L1-L2] [--against NAME,...] [--world NAME|FILE] [--csv FILE] " \
-    "[--json]"
+    "[--force] [--json]"
 
 /* What to play and where the results go. */
 typedef struct duel_ladder_opts {
     const char *dir, *csv, *world_arg;
     duel_rules world;                /* the run's, or --world's */
-    int top, json, subset;
+    int top, json, subset, force;
     uint32_t lo, hi;                 /* levels lo..hi (1-based, inclusive); 0, 0: all */
     int against[DUEL_N_BUILTINS];    /* the built-in strategies, in the order given */
     uint32_t n_against;
@@ -80,6 +81,8 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
             o->top = 1;
         } else if (strcmp(a, "--json") == 0) {
             o->json = 1;
+        } else if (strcmp(a, "--force") == 0) {
+            o->force = 1;
         } else if (strcmp(a, "--levels") == 0 || strcmp(a, "--against") == 0 || strcmp(a, "--csv") == 0 ||
                    strcmp(a, "--world") == 0) {
             if (v == NULL) {
@@ -126,6 +129,17 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
     /* the games are the run's own unless --world says otherwise */
     if (o->world_arg != NULL ? duel_world_arg(&o->world, o->world_arg) : duel_run_world(o->dir, &o->world))
         return -1;
+    /* before any game: an output that is not a ladder is refused now, not after the work */
+    if (o->csv != NULL || !o->subset) {
+        static const duel_out_kind kind = {"a ladder CSV", "level,generation,population,hidden,connections,", NULL};
+        char path[4200];
+        const char *in[1];
+        in[0] = o->dir;
+        snprintf(path, sizeof path, "%s/ladder.csv", o->dir);
+        if (duel_out_allowed("ladder", o->csv != NULL ? "--csv" : "its", o->csv != NULL ? o->csv : path, &kind,
+                             o->force, in, 1) != 0)
+            return -1;
+    }
     return 0;
 }
 

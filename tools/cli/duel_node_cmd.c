@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_outputs.h"
 #include "duel_ctrl.h"
 #include "duel_lcm.h"
 #include "duel_world_cfg.h"
@@ -12,7 +13,7 @@ static void duel_node_usage(void)
 {
     fprintf(stderr, "usage: duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
                     "       duel_evolve node world --food K|training --lcm URL [--timeout-ms N] [--wait-ms N] "
-                    "[--period-ms N] [--lcm-log FILE.lcm] [--world NAME|FILE]\n"
+                    "[--period-ms N] [--lcm-log FILE.lcm [--force]] [--world NAME|FILE]\n"
                     "  URL: an LCM provider, e.g. tcpq://127.0.0.1:7700 (docs/lcm.md)\n");
 }
 
@@ -138,7 +139,8 @@ static int duel_node_world_cmd(int argc, char **argv)
     duel_lcm_rec rec;
     char err_text[4400];
     lcm_t *lcm;
-    int i, err, have_food = 0;
+    int i, err, have_food = 0, force = 0;
+    const char *world_file = NULL;
 
     memset(&o, 0, sizeof o);
     o.food_config = DUEL_TRAINING;
@@ -146,6 +148,10 @@ static int duel_node_world_cmd(int argc, char **argv)
     o.wait_ms = 30000;
     for (i = 0; i < argc; i++) {
         const char *opt = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(opt, "--force") == 0) {
+            force = 1;
+            continue;
+        }
         if (v == NULL) {
             static const char *const takes[] = {"--food", "--lcm", "--timeout-ms", "--wait-ms", "--period-ms",
                                                 "--lcm-log", "--world", NULL};
@@ -180,6 +186,7 @@ static int duel_node_world_cmd(int argc, char **argv)
             if (duel_world_arg(&world, v) != 0)
                 return 2;
             o.rules = &world;
+            world_file = v;
         } else if (strcmp(opt, "--lcm-log") == 0) {
             log_path = v;
         } else {
@@ -190,6 +197,11 @@ static int duel_node_world_cmd(int argc, char **argv)
     if (!have_food) {
         fprintf(stderr, "duel_evolve: node world: --food K|training is required\n");
         return 2;
+    }
+    if (log_path != NULL) {
+        static const duel_out_kind log_kind = {"this project's LCM event log", NULL, duel_out_is_duel_lcm};
+        if (duel_out_allowed("node world", "--lcm-log", log_path, &log_kind, force, &world_file, 1) != 0)
+            return 2;
     }
     lcm = duel_node_lcm(url);
     if (lcm == NULL)

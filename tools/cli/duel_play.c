@@ -8,13 +8,14 @@
 #include "duel_files.h"
 #include "duel_json.h"
 #include "duel_lcm.h"
+#include "duel_outputs.h"
 #include "duel_trace.h"
 #include "duel_world_cfg.h"
 
 static void duel_play_usage(void)
 {
     fprintf(stderr, "usage: duel_evolve play A B [--games 288 | --food K|training --side west|east] [--trace FILE.csv] "
-                    "[--lcm-log FILE.lcm] [--world NAME|FILE] [--json]\n"
+                    "[--lcm-log FILE.lcm] [--force] [--world NAME|FILE] [--json]\n"
                     "  A, B: a champion blob or genome file, or builtin:NAME (idle, spinner, forager, hunter, "
                     "forager-hunter); the world: --world's, else the runs' the champions come from, else v1\n");
 }
@@ -64,7 +65,7 @@ int duel_cmd_play(int argc, char **argv)
     duel_cli_ctrl a, b;
     const char *trace_path = NULL, *lcm_path = NULL, *world_arg = NULL;
     duel_rules world = *duel_rules_v1();
-    int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err, json = 0, found = 0;
+    int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err, json = 0, found = 0, force = 0;
 
     if (argc < 2) {
         duel_play_usage();
@@ -74,6 +75,10 @@ int duel_cmd_play(int argc, char **argv)
         const char *opt = argv[i];
         if (strcmp(opt, "--json") == 0) {
             json = 1;
+            continue;
+        }
+        if (strcmp(opt, "--force") == 0) {
+            force = 1;
             continue;
         }
         if (i + 1 >= argc) {
@@ -123,6 +128,19 @@ int duel_cmd_play(int argc, char **argv)
         fprintf(stderr, "duel_evolve: play: %s records one game, not the 288 of a comparison\n",
                 trace_path != NULL ? "--trace" : "--lcm-log");
         return 2;
+    }
+    {
+        static const duel_out_kind trace_kind = {"a game trace", "t,west_x,west_y,", NULL};
+        static const duel_out_kind log_kind = {"this project's LCM event log", NULL, duel_out_is_duel_lcm};
+        const char *in[3];
+        in[0] = argv[0];
+        in[1] = argv[1];
+        in[2] = lcm_path;
+        if (trace_path != NULL && duel_out_allowed("play", "--trace", trace_path, &trace_kind, force, in, 3) != 0)
+            return 2;
+        in[2] = trace_path;
+        if (lcm_path != NULL && duel_out_allowed("play", "--lcm-log", lcm_path, &log_kind, force, in, 3) != 0)
+            return 2;
     }
     if (world_arg != NULL ? duel_world_arg(&world, world_arg) != 0
                           : duel_ctrl_world((const char *const *)argv, 2, &world, &found) != 0)

@@ -6,11 +6,13 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include "duel_cli.h"
 #include "duel_ctrl.h"
 #include "duel_exec.h"
 #include "duel_files.h"
+#include "duel_outputs.h"
 #include "duel_render.h"
 #include "duel_replay.h"
 #include "duel_world_cfg.h"
@@ -20,7 +22,7 @@
 static const char duel_render_usage_line[] =
     "usage: duel_evolve render (LOG.lcm | A B [--food K|training] [--side west|east] [--world NAME|FILE]) --out DIR "
     "[--size 600] "
-    "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30]\n";
+    "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30] [--force]\n";
 
 /* "--opt N" with lo <= N <= hi. 0, or -1 after one line on stderr. */
 static int duel_rc_int(const char *cmd, const char *opt, const char *v, long lo, long hi, int *out)
@@ -78,6 +80,104 @@ static int duel_rc_target(const char *cmd, const char *path, char target[DUEL_RC
     else
         fprintf(stderr, "duel_evolve: %s: %s: cannot write: %s\n", cmd, path, strerror(errno));
     return -1;
+}
+
+/* What marks the outputs as this command's (a PNG text chunk, an MP4 comment), so that a later render
+ * replaces its own files and refuses anybody else's (duel_outputs.h). */
+#define DUEL_RC_FRAME_MARK "duel_evolve render"
+#define DUEL_RC_NET_MARK "duel_evolve render-net"
+#define DUEL_RC_VIDEO_MARK "duel_evolve render"
+
+/* 1 when mark occurs in the len bytes at p. */
+static int duel_rc_has(const uint8_t *p, size_t len, const char *mark)
+{
+    size_t i, n = strlen(mark);
+    for (i = 0; i + n <= len; i++)
+        if (p[i] == (uint8_t)mark[0] && memcmp(p + i, mark, n) == 0)
+            return 1;
+    return 0;
+}
+
+static int duel_rc_is_frame(const uint8_t *head, size_t len, const char *path)
+{
+    (void)path;
+    return len > 8 && memcmp(head, "\x89PNG", 4) == 0 && duel_rc_has(head, len, DUEL_RC_FRAME_MARK);
+}
+
+static int duel_rc_is_net(const uint8_t *head, size_t len, const char *path)
+{
+    (void)path;
+    return len > 8 && memcmp(head, "\x89PNG", 4) == 0 && duel_rc_has(head, len, DUEL_RC_NET_MARK);
+}
+
+/* An MP4 with the comment: its first 256 KiB (faststart puts the metadata there), else its last. */
+static int duel_rc_is_video(const uint8_t *head, size_t len, const char *path)
+{
+    static uint8_t buf[256 * 1024];
+    FILE *f;
+    size_t got;
+    int yes = 0;
+    (void)head;
+    (void)len;
+    f = duel_fopen_regular(path);
+    if (f == NULL)
+        return 0;
+    got = fread(buf, 1, sizeof buf, f);
+    yes = duel_rc_has(buf, got, DUEL_RC_VIDEO_MARK);
+    if (!yes && got == sizeof buf && fseek(f, -(long)sizeof buf, SEEK_END) == 0) {
+        got = fread(buf, 1, sizeof buf, f);
+        yes = duel_rc_has(buf, got, DUEL_RC_VIDEO_MARK);
+    }
+    fclose(f);
+    return yes;
+}
+
+static const duel_out_kind duel_rc_frame_kind = {"a frame from duel_evolve render", NULL, duel_rc_is_frame};
+static const duel_out_kind duel_rc_net_kind = {"a picture from duel_evolve render-net", NULL, duel_rc_is_net};
+static const duel_out_kind duel_rc_video_kind = {"a video from duel_evolve render", NULL, duel_rc_is_video};
+
+static uint32_t duel_rc_be32(uint32_t v, uint8_t *p)
+{
+    p[0] = (uint8_t)(v >> 24);
+    p[1] = (uint8_t)(v >> 16);
+    p[2] = (uint8_t)(v >> 8);
+    p[3] = (uint8_t)v;
+    return v;
+}
+
+/* Graphviz's PNG at path with a tEXt chunk "Software: duel_evolve render-net" after its IHDR. 0 or -1 (errno). */
+static int duel_rc_mark_png(const char *path)
+{
+    static const char key[] = "Software";
+    uint8_t *png, *out, *c;
+    size_t len, n = sizeof key + strlen(DUEL_RC_NET_MARK); /* key, NUL, text */
+    int r;
+    if (duel_file_read(path, (size_t)1 << 30, &png, &len) != 0)
+        return -1;
+    /* signature (8), then IHDR: length 13, type, 13 bytes, CRC: 33 bytes */
+    if (len < 33 || memcmp(png, "\x89PNG\r\n\x1a\n", 8) != 0 || memcmp(png + 12, "IHDR", 4) != 0) {
+        free(png);
+        errno = EINVAL;
+        return -1;
+    }
+    out = (uint8_t *)malloc(len + 12 + n);
+    if (out == NULL) {
+        free(png);
+        errno = ENOMEM;
+        return -1;
+    }
+    memcpy(out, png, 33);
+    c = out + 33;
+    duel_rc_be32((uint32_t)n, c);
+    memcpy(c + 4, "tEXt", 4);
+    memcpy(c + 8, key, sizeof key);
+    memcpy(c + 8 + sizeof key, DUEL_RC_NET_MARK, strlen(DUEL_RC_NET_MARK));
+    duel_rc_be32((uint32_t)crc32(0L, c + 4, (uInt)(4 + n)), c + 8 + n);
+    memcpy(c + 12 + n, png + 33, len - 33);
+    free(png);
+    r = duel_file_replace(path, out, len + 12 + n);
+    free(out);
+    return r == 0 ? 0 : -1;
 }
 
 static double duel_rc_now(void)
@@ -167,6 +267,10 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
     argv[argc++] = (char *)"libx264";
     argv[argc++] = (char *)"-pix_fmt";
     argv[argc++] = (char *)"yuv420p";
+    argv[argc++] = (char *)"-metadata"; /* how a later --video recognises this file as ours (duel_rc_is_video) */
+    argv[argc++] = (char *)"comment=" DUEL_RC_VIDEO_MARK;
+    argv[argc++] = (char *)"-movflags";
+    argv[argc++] = (char *)"+faststart"; /* the metadata at the start of the file */
     argv[argc++] = (char *)"-f";
     argv[argc++] = (char *)"mp4";
     argv[argc++] = (char *)"-y";
@@ -198,6 +302,7 @@ int duel_cmd_render(int argc, char **argv)
     char video_target[DUEL_RC_PATH];
     char ffmpeg[DUEL_RC_PATH], path[DUEL_RC_PATH], err[512], suffix[64];
     int i, n_pos = 0, size = 600, every = 1, fps = 30, food = DUEL_TRAINING, a_west = 1, game_opts = 0, rc = 0;
+    int force = 0;
     unsigned flags = 0, n_out = 0;
     duel_replay rep;
     duel_render ren;
@@ -225,6 +330,10 @@ int duel_cmd_render(int argc, char **argv)
         }
         if (strcmp(opt, "--trails") == 0) {
             flags |= DUEL_RENDER_TRAILS;
+            continue;
+        }
+        if (strcmp(opt, "--force") == 0) {
+            force = 1;
             continue;
         }
         if (i + 1 >= argc) {
@@ -286,7 +395,8 @@ int duel_cmd_render(int argc, char **argv)
                             "ffmpeg)\n");
             return 2;
         }
-        if (duel_rc_target("render", video, video_target, "video") != 0)
+        if (duel_out_allowed("render", "--video", video, &duel_rc_video_kind, force, pos, 2) != 0 ||
+            duel_rc_target("render", video, video_target, "video") != 0)
             return 2;
         video = video_target;
         if (duel_rc_probe(video, ".tmp") != 0) {
@@ -310,6 +420,19 @@ int duel_cmd_render(int argc, char **argv)
         duel_replay_free(&rep);
         return 2;
     }
+    /* every frame this will write: one already there that is not a frame of ours is not replaced */
+    for (k = 0, n_out = 0;; k += (size_t)every) {
+        if (k > rep.n - 1)
+            k = rep.n - 1;
+        snprintf(path, sizeof path, "%s/frame-%05u.png", dir, n_out++);
+        if (duel_out_allowed("render", "--out", path, &duel_rc_frame_kind, force, pos, 2) != 0) {
+            duel_replay_free(&rep);
+            return 2;
+        }
+        if (k == rep.n - 1)
+            break;
+    }
+    n_out = 0;
     if (duel_mkdir(dir) != 0) {
         fprintf(stderr, "duel_evolve: render: %s: cannot create the directory: %s\n", dir, strerror(errno));
         duel_replay_free(&rep);
@@ -393,10 +516,12 @@ int duel_cmd_render_net(int argc, char **argv)
     size_t text_len = 0;
     FILE *f;
     duel_dot_opts o = {0};
-    int i, fd, st, rc = 0;
+    int i, fd, st, rc = 0, force = 0;
 
     for (i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--out") == 0) {
+        if (strcmp(argv[i], "--force") == 0) {
+            force = 1;
+        } else if (strcmp(argv[i], "--out") == 0) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "duel_evolve: render-net: --out needs a file name\n");
                 return 2;
@@ -410,14 +535,14 @@ int duel_cmd_render_net(int argc, char **argv)
             if (duel_dot_parse_min_weight("render-net", argv[++i], &o) != 0)
                 return 2;
         } else if (argv[i][0] == '-' || blob != NULL) {
-            fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--min-weight W]\n");
+            fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--force] [--min-weight W]\n");
             return 2;
         } else {
             blob = argv[i];
         }
     }
     if (blob == NULL || out == NULL) {
-        fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--min-weight W]\n");
+        fprintf(stderr, "usage: duel_evolve render-net BLOB --out FILE.png [--force] [--min-weight W]\n");
         return 2;
     }
     if (duel_exec_find("dot", dot, sizeof dot) != 0) {
@@ -425,7 +550,8 @@ int duel_cmd_render_net(int argc, char **argv)
                         "graphviz)\n");
         return 2;
     }
-    if (duel_rc_target("render-net", out, out_target, "picture") != 0)
+    if (duel_out_allowed("render-net", "--out", out, &duel_rc_net_kind, force, &blob, 1) != 0 ||
+        duel_rc_target("render-net", out, out_target, "picture") != 0)
         return 2;
     out = out_target;
     /* the picture in memory first: a bad blob is reported before any file is made */
@@ -482,7 +608,7 @@ int duel_cmd_render_net(int argc, char **argv)
         else
             fprintf(stderr, "duel_evolve: render-net: %s: %s\n", out, msg);
         rc = 1;
-    } else if (duel_file_sync(tmp_png) != 0 || duel_file_commit(tmp_png, out) != 0) {
+    } else if (duel_rc_mark_png(tmp_png) != 0 || duel_file_sync(tmp_png) != 0 || duel_file_commit(tmp_png, out) != 0) {
         fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
         rc = 1;
     }

@@ -22,6 +22,7 @@
 #include "duel_fixed.h"
 #include "duel_pairs.h"
 #include "duel_generations.h"
+#include "duel_outputs.h"
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
 #include "duel_mpi.h"
@@ -972,24 +973,6 @@ static void duel_start_words(const duel_run *R, char *buf, size_t cap)
     }
 }
 
-/* What a run directory may hold (docs/tools.md, "The run directory"), and so
- * what an existing --out may hold for a new run to start in it. */
-static int duel_run_file_name(const char *name)
-{
-    static const char *const names[] = {"config.ini", "generations.csv", "dominance.csv", "strength.csv",
-                                        "checkpoint.bin", "ladder.csv", "compare-cache.csv", "log.txt",
-                                        "champions", "games", "opponents", ".lock"};
-    size_t i, n = strlen(name);
-    for (i = 0; i < sizeof names / sizeof names[0]; i++) {
-        size_t k = strlen(names[i]);
-        /* NAME, or NAME.tmp left by a killed writer */
-        if (strcmp(name, names[i]) == 0 || (n == k + 4 && strncmp(name, names[i], k) == 0 &&
-                                            strcmp(name + k, ".tmp") == 0))
-            return 1;
-    }
-    return 0;
-}
-
 /* Whether an existing directory may become a new run: empty, or a run's own
  * files only, with a config.ini (if any) that a run wrote. 1, or 0 with the
  * first foreign entry in what. */
@@ -1006,7 +989,7 @@ static int duel_dir_is_runs(const char *dir, char *what, size_t cap)
         return 0;
     }
     while (ok && (e = readdir(d)) != NULL) {
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0 || duel_run_file_name(e->d_name))
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0 || duel_is_run_file(e->d_name))
             continue;
         snprintf(what, cap, "holds '%s', which is not a run's", e->d_name);
         ok = 0;

@@ -130,36 +130,71 @@ int duel_cmp_cache_open(duel_cmp_cache *c, const char *path, char *err, size_t e
     return r;
 }
 
+/* 1 when text starts with header, its newline written "\n" or "\r\n"; *hlen is how long it is there. */
+static int duel_cmp_starts(const char *text, size_t len, const char *header, size_t *hlen)
+{
+    size_t n = strlen(header) - 1; /* without its newline */
+    if (len < n + 1 || memcmp(text, header, n) != 0)
+        return 0;
+    if (text[n] == '\n') {
+        *hlen = n + 1;
+        return 1;
+    }
+    if (len >= n + 2 && text[n] == '\r' && text[n + 1] == '\n') {
+        *hlen = n + 2;
+        return 1;
+    }
+    return 0;
+}
+
+int duel_cmp_cache_is(const uint8_t *head, size_t len, const char *path)
+{
+    size_t hlen;
+    (void)path;
+    return duel_cmp_starts((const char *)head, len, DUEL_CMP_HEADER, &hlen) ||
+           duel_cmp_starts((const char *)head, len, DUEL_CMP_HEADER_1, &hlen);
+}
+
 int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, size_t len, char *err,
                          size_t err_len)
 {
-    size_t at, line = 1, hlen;
+    size_t at, line = 1, hlen = 0;
     int v1;
 
     memset(c, 0, sizeof *c);
     snprintf(c->path, sizeof c->path, "%s", path);
-    v1 = len >= strlen(DUEL_CMP_HEADER_1) && memcmp(text, DUEL_CMP_HEADER_1, strlen(DUEL_CMP_HEADER_1)) == 0;
-    if (!v1 && (len < strlen(DUEL_CMP_HEADER) || memcmp(text, DUEL_CMP_HEADER, strlen(DUEL_CMP_HEADER)) != 0)) {
-        /* another version of this file: its results do not hold; start afresh */
-        c->dirty = 1;
-        return 0;
+    if (len == 0)
+        return 0; /* an empty file: an empty cache */
+    v1 = duel_cmp_starts(text, len, DUEL_CMP_HEADER_1, &hlen);
+    if (!v1 && !duel_cmp_starts(text, len, DUEL_CMP_HEADER, &hlen)) {
+        /* not ours, or a version this build does not know: never replaced silently */
+        snprintf(err, err_len, "%s: not a compare cache this version reads (its first line is not '%.*s'): "
+                               "refusing to replace it (move it away, or --force replaces it)", path,
+                 (int)strlen(DUEL_CMP_HEADER) - 1, DUEL_CMP_HEADER);
+        return -2;
     }
-    hlen = v1 ? strlen(DUEL_CMP_HEADER_1) : strlen(DUEL_CMP_HEADER);
     for (at = hlen; at < len; line++) {
         char row[160];
         const char *p = row;
-        size_t end = at, key = v1 ? 34 : 51;
+        size_t end = at, stop, key = v1 ? 34 : 51;
         uint64_t w, a, b;
         duel_tally t;
+        const duel_tally *have;
         while (end < len && text[end] != '\n')
             end++;
-        if (end == len) /* a torn last line (the writer died): not an entry */
-            break;
-        if (end - at >= sizeof row || end - at < key)
+        if (end == len) {
+            /* the cache is replaced whole, never appended: a cut line is damage, not a writer that died */
+            snprintf(err, err_len, "%s:%zu: the last line is cut short (no newline): delete the file to rebuild it "
+                                   "(its games are played again)", path, line + 1);
+            duel_cmp_cache_free(c);
+            return -1;
+        }
+        stop = end > at && text[end - 1] == '\r' ? end - 1 : end; /* a CRLF copy reads the same */
+        if (stop - at >= sizeof row || stop - at < key)
             goto bad;
-        memcpy(row, text + at, end - at);
-        row[end - at] = '\0';
-        if (strlen(row) != end - at)
+        memcpy(row, text + at, stop - at);
+        row[stop - at] = '\0';
+        if (strlen(row) != stop - at)
             goto bad;
         if (v1) {
             w = duel_rules_id(duel_rules_v1());
@@ -175,7 +210,16 @@ int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, 
             duel_cmp_u32(&p, '\0', &t.timeouts) || (uint64_t)t.wins_a + t.wins_b + t.draws + t.timeouts !=
                                                          2u * DUEL_CONFIGS)
             goto bad;
-        if (duel_cmp_cache_add(c, w, a, b, &t) != 0) {
+        have = duel_cmp_cache_find(c, w, a, b);
+        if (have != NULL && memcmp(have, &t, sizeof t) != 0) {
+            /* two results for one comparison: which is right cannot be known */
+            snprintf(err, err_len, "%s:%zu: a second, different result for the comparison of %016" PRIx64
+                                   " against %016" PRIx64 " (an edited or merged file): delete the file to rebuild "
+                                   "it (its games are played again)", path, line + 1, a, b);
+            duel_cmp_cache_free(c);
+            return -1;
+        }
+        if (have == NULL && duel_cmp_cache_add(c, w, a, b, &t) != 0) {
             snprintf(err, err_len, "%s: out of memory", path);
             duel_cmp_cache_free(c);
             return -1;

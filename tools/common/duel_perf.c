@@ -258,6 +258,20 @@ out:
     return rc;
 }
 
+/* A cache opened; a file that is not one starts afresh (and is replaced) only with --force. 0 or -1. */
+static int duel_perf_cache_open(duel_cmp_cache *c, const char *path, const duel_perf_opts *o, char *err,
+                                size_t err_len)
+{
+    int r = duel_cmp_cache_open(c, path, err, err_len);
+    if (r == -2 && o->force) {
+        memset(c, 0, sizeof *c);
+        snprintf(c->path, sizeof c->path, "%s", path);
+        c->dirty = 1;
+        return 0;
+    }
+    return r == 0 ? 0 : -1;
+}
+
 int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
                       uint32_t n_against, const duel_perf_opts *o)
 {
@@ -283,14 +297,14 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     caches = (duel_cmp_cache *)calloc(m->n_cand, sizeof *caches);
     if (caches == NULL)
         DUEL_PERF_OOM(m);
-    if (o->cache_path != NULL && duel_cmp_cache_open(&shared, o->cache_path, err, sizeof err) != 0) {
+    if (o->cache_path != NULL && duel_perf_cache_open(&shared, o->cache_path, o, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
         goto out;
     }
     for (i = 0; i < m->n_cand && o->cache_path == NULL; i++) {
         char path[4200];
         snprintf(path, sizeof path, "%s/compare-cache.csv", m->runs[i].dir);
-        if (duel_cmp_cache_open(&caches[i], path, err, sizeof err) != 0) {
+        if (duel_perf_cache_open(&caches[i], path, o, err, sizeof err) != 0) {
             fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
             goto out;
         }

@@ -58,6 +58,7 @@ typedef struct duel_perf_opts {
     int mode;                /* enum duel_perf_mode */
     const char *prefix;      /* error lines: "duel_evolve: PREFIX..." ("compare: ") */
     int progress;            /* 1: a progress line on stderr */
+    int force;               /* 1: a cache file that is not one is replaced (--force); 0: refused */
     int no_checkpoint;       /* 1: a run is finished when generations.csv records every generation (a report of
                               * runs kept without their checkpoints); 0: its checkpoint says so */
 } duel_perf_opts;

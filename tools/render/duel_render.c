@@ -532,6 +532,15 @@ static int duel_rd_png_encode(FILE *f, const uint8_t *rgb, int n, duel_rd_png_er
     png_set_filter(png, 0, PNG_FILTER_NONE);
     png_set_IHDR(png, info, (png_uint_32)n, (png_uint_32)n, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    {
+        /* what makes a later render replace this frame and refuse anybody else's file (duel_outputs.h) */
+        png_text t;
+        memset(&t, 0, sizeof t);
+        t.compression = PNG_TEXT_COMPRESSION_NONE;
+        t.key = (png_charp) "Software";
+        t.text = (png_charp) "duel_evolve render";
+        png_set_text(png, info, &t, 1);
+    }
     png_write_info(png, info);
     for (y = 0; y < n; y++)
         png_write_row(png, rgb + (size_t)y * (size_t)n * 3);
