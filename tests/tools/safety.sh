@@ -242,6 +242,37 @@ outputs)
       fail "render refused its own video"
   fi
   ;;
+paths)
+  # class 5: a relative start path in a plan is the plan's, resolved once when the plan is read; control
+  # characters in a start path are refused
+  presets=$(cd "$(dirname "$plan")/../../configs" && pwd)
+  "$duel" run --config "$cfg" --out "$tmp/src" --generations 2 --quiet
+  mkdir -p "$tmp/plans" "$tmp/elsewhere"
+  cp "$tmp/src/champions/gen-00001.genome" "$tmp/plans/start.genome"
+  printf '[experiment]\npresets = %s\n[all runs]\ngenerations = 1\npop_size = 16\ncompare_configs = 12\n[method c]\npreset = paper\nruns = 2\nstart = genome:start.genome\n' \
+    "$presets" > "$tmp/plans/p.ini"
+  # a same-named file where the runs work is not the one used
+  (cd "$tmp/elsewhere" && printf 'not a genome\n' > start.genome &&
+    "$duel" experiment ../plans/p.ini --out "$tmp/x2" --quiet > /dev/null) ||
+    fail "a plan's relative start path did not resolve from another directory"
+  grep -q "start = genome:$tmp/plans/start.genome" "$tmp/x2/plan.ini" || fail "plan.ini: $(grep start "$tmp/x2/plan.ini")"
+  grep -q "^start = genome:$tmp/plans/start.genome" "$tmp/x2/runs/c-1/config.ini" || fail "the run's start path"
+  "$duel" experiment resume "$tmp/x2" --quiet > /dev/null || fail "resume of a plan with a start path"
+  rm "$tmp/plans/start.genome"
+  expect_bad "start=genome:.*start.genome (relative to .*plans): No such file or directory" \
+    experiment "$tmp/plans/p.ini" --out "$tmp/x3"
+  [ ! -e "$tmp/x3" ] || fail "a plan with a missing start file made its directory"
+  # on the command line, a path is the working directory's
+  cp "$tmp/src/champions/gen-00001.genome" "$tmp/elsewhere/s2.genome"
+  sed -i '/^start = /d' "$tmp/plans/p.ini"
+  (cd "$tmp/elsewhere" && "$duel" experiment ../plans/p.ini --out "$tmp/x4" --set start=genome:s2.genome --quiet > /dev/null) ||
+    fail "--set start=genome:RELATIVE"
+  grep -q "start = genome:$tmp/elsewhere/s2.genome" "$tmp/x4/plan.ini" || fail "plan.ini: $(grep start "$tmp/x4/plan.ini")"
+  expect_bad "start: a control character (byte 0x0a)" run --config "$cfg" --out "$tmp/never" --set "start=genome:a
+b"
+  expect_bad "start: a control character (byte 0x09)" run --config "$cfg" --out "$tmp/never" --set "start=blob:a	b"
+  [ ! -e "$tmp/never" ] || fail "a refused start path made the run directory"
+  ;;
 *)
   fail "unknown check $what"
   ;;

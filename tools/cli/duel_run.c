@@ -27,6 +27,7 @@
 #include "duel_lcm_champ.h"
 #include "duel_mpi.h"
 #include "duel_signal.h"
+#include "duel_text.h"
 #include "duel_world_cfg.h"
 #include "neat_coev.h"
 #include "neat_phenotype.h"
@@ -1139,7 +1140,10 @@ static int duel_run_main(int argc, char **argv)
     }
     for (k = 0; k < n_sets; k++)
         if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: --set %s: %s\n", sets[k], err);
+            {
+                char esc[1100];
+                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
+            }
             return 2;
         }
     if (have_seed)
@@ -1377,7 +1381,10 @@ static int duel_resume_main(int argc, char **argv)
         return 2;
     for (k = 0; k < n_sets; k++)
         if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: --set %s: %s\n", sets[k], err);
+            {
+                char esc[1100];
+                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
+            }
             return 2;
         }
     if (have_gens)
@@ -1564,7 +1571,10 @@ int duel_cmd_config(int argc, char **argv)
             from_set = 0;
         } else if (strcmp(argv[i], "--set") == 0 && i + 1 < argc) {
             if (duel_config_set(&cfg, argv[++i], err, sizeof err) != 0) {
-                fprintf(stderr, "duel_evolve: --set %s: %s\n", argv[i], err);
+                {
+                char esc[1100];
+                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(argv[i], esc, sizeof esc), err);
+            }
                 return 2;
             }
             last = argv[i];

@@ -54,6 +54,14 @@ void duel_config_default(duel_config *cfg)
 static int duel_start_parse(duel_start *st, const char *v, char *err, size_t err_len)
 {
     static const char expect[] = "expected minimal, hidden:H:inputs, hidden:H:bias, blob:PATH or genome:PATH";
+    const char *c;
+    /* a control character (a newline, a tab) would write a config.ini that never reads back */
+    for (c = v; *c != '\0'; c++)
+        if ((unsigned char)*c < 0x20 || *c == 0x7f) {
+            snprintf(err, err_len, "start: a control character (byte 0x%02x) at offset %d of its value", (unsigned)(unsigned char)*c,
+                     (int)(c - v));
+            return -1;
+        }
     if (strcmp(v, "minimal") == 0) {
         memset(st, 0, sizeof *st);
         st->kind = DUEL_START_MINIMAL;

@@ -1,5 +1,5 @@
 /* duel_plan.c - an experiment's plan read from its INI file (or from an experiment directory), each method's run configuration built from its preset and the overrides. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,6 +8,7 @@
 
 #include "duel_files.h"
 #include "duel_plan.h"
+#include "duel_text.h"
 #include "neat_ini.h"
 
 #define DUEL_PLAN_HEADER "; the plan of this experiment (duel_evolve experiment): its methods' run configurations are configs/NAME.ini\n"
@@ -18,6 +19,7 @@ typedef struct duel_plan_reader {
     int in_all, in_experiment, method; /* the section: method index, or -1 */
     int have_runs[DUEL_PLAN_MAX_METHODS], have_preset[DUEL_PLAN_MAX_METHODS];
     int from_dir; /* plan.ini of an experiment directory: presets are not read */
+    char dir[4200]; /* the plan's directory: what a relative start path is relative to */
 } duel_plan_reader;
 
 static int duel_plan_name_ok(const char *s)
@@ -61,6 +63,34 @@ static int duel_plan_add_set(char (*sets)[DUEL_PLAN_SET_LEN], uint32_t *n, const
     return 0;
 }
 
+/* An override "start=blob:PATH" or "start=genome:PATH" (or "neat.start=...") whose PATH is relative: made
+ * absolute against base, once, when the plan is read; each run then opens that file whatever its working
+ * directory (the experiment's), and plan.ini stores it so. The file must exist now. 0, or -1 with err. */
+static int duel_plan_resolve_start(char *set, const char *base, char *err, size_t err_len)
+{
+    const char *eq = strchr(set, '='), *path;
+    char joined[8600], real[4200];
+    size_t klen = eq != NULL ? (size_t)(eq - set) : 0, plen;
+    if (eq == NULL || !((klen == 5 && strncmp(set, "start", 5) == 0) || (klen == 10 && strncmp(set, "neat.start", 10) == 0)))
+        return 0;
+    path = strncmp(eq + 1, "blob:", 5) == 0 ? eq + 6 : strncmp(eq + 1, "genome:", 7) == 0 ? eq + 8 : NULL;
+    if (path == NULL || path[0] == '/' || path[0] == '\0')
+        return 0;
+    if ((size_t)snprintf(joined, sizeof joined, "%s/%s", base, path) >= sizeof joined ||
+        realpath(joined, real) == NULL) {
+        snprintf(err, err_len, "%.*s: %s (relative to %s): %s", (int)(path - set), set, path,
+                 base, strlen(joined) >= sizeof joined - 1 ? "path too long" : strerror(errno));
+        return -1;
+    }
+    plen = (size_t)(path - set);
+    if (plen + strlen(real) + 1 > DUEL_PLAN_SET_LEN) {
+        snprintf(err, err_len, "%.*s: %s: too long once made absolute (%s)", (int)plen, set, path, real);
+        return -1;
+    }
+    strcpy(set + plen, real);
+    return 0;
+}
+
 /* Each override is tried on a default configuration at once, so that an unknown key names its line. */
 static int duel_plan_try_set(const char *set, char *err, size_t err_len)
 {
@@ -100,7 +130,8 @@ static int duel_plan_handler(void *user, const char *section, const char *key, c
         return 0;
     }
     if (strcmp(section, "all runs") == 0) {
-        if (duel_plan_add_set(p->sets, &p->n_sets, key, value, err, err_len) != 0)
+        if (duel_plan_add_set(p->sets, &p->n_sets, key, value, err, err_len) != 0 ||
+            (!r->from_dir && duel_plan_resolve_start(p->sets[p->n_sets - 1], r->dir, err, err_len) != 0))
             return -1;
         return duel_plan_try_set(p->sets[p->n_sets - 1], err, err_len);
     }
@@ -146,7 +177,8 @@ static int duel_plan_handler(void *user, const char *section, const char *key, c
     } else if (strcmp(key, "start") == 0 && strcmp(value, "best") == 0) {
         m->start_best = 1;
     } else {
-        if (duel_plan_add_set(m->sets, &m->n_sets, key, value, err, err_len) != 0)
+        if (duel_plan_add_set(m->sets, &m->n_sets, key, value, err, err_len) != 0 ||
+            (!r->from_dir && duel_plan_resolve_start(m->sets[m->n_sets - 1], r->dir, err, err_len) != 0))
             return -1;
         return duel_plan_try_set(m->sets[m->n_sets - 1], err, err_len);
     }
@@ -250,6 +282,7 @@ static int duel_plan_parse(duel_plan **out, const char *path, const char *text, 
     memset(&r, 0, sizeof r);
     r.p = p;
     r.from_dir = from_dir;
+    duel_plan_dirname(path, r.dir, sizeof r.dir);
     if ((text != NULL ? neat_ini_parse_text(path, text, text_len, duel_plan_handler, &r, err, err_len)
                       : neat_ini_parse_file(path, duel_plan_handler, &r, err, err_len)) != 0)
         return -1;
@@ -262,7 +295,10 @@ static int duel_plan_parse(duel_plan **out, const char *path, const char *text, 
         }
         snprintf(key, sizeof key, "%.*s", (int)(eq - extra[i]), extra[i]);
         if (duel_plan_try_set(extra[i], msg, sizeof msg) != 0) {
-            snprintf(err, err_len, "--set %s: %s", extra[i], msg);
+            {
+                char e[1100];
+                snprintf(err, err_len, "--set %s: %s", duel_text_escape(extra[i], e, sizeof e), msg);
+            }
             return -1;
         }
         /* a key [all runs] has already gets the new value in its place: plan.ini holds each key once */
@@ -276,7 +312,20 @@ static int duel_plan_parse(duel_plan **out, const char *path, const char *text, 
             }
             snprintf(p->sets[k], DUEL_PLAN_SET_LEN, "%s", extra[i]);
         } else if (duel_plan_add_set(p->sets, &p->n_sets, key, eq + 1, msg, sizeof msg) != 0) {
-            snprintf(err, err_len, "--set %s: %s", extra[i], msg);
+            {
+                char e[1100];
+                snprintf(err, err_len, "--set %s: %s", duel_text_escape(extra[i], e, sizeof e), msg);
+            }
+            return -1;
+        } else {
+            k = p->n_sets - 1;
+        }
+        /* a path on the command line is the working directory's */
+        if (duel_plan_resolve_start(p->sets[k], ".", msg, sizeof msg) != 0) {
+            {
+                char e[1100];
+                snprintf(err, err_len, "--set %s: %s", duel_text_escape(extra[i], e, sizeof e), msg);
+            }
             return -1;
         }
     }

@@ -1,0 +1,30 @@
+/* duel_text.c - text from input made safe to print in a message: control bytes escaped, so that one message stays one line. */
+#include <stdio.h>
+
+#include "duel_text.h"
+
+const char *duel_text_escape(const char *s, char *buf, size_t cap)
+{
+    size_t n = 0;
+    for (; *s != '\0'; s++) {
+        unsigned char c = (unsigned char)*s;
+        char esc[5];
+        size_t k, len;
+        if (c < 0x20 || c == 0x7f) {
+            snprintf(esc, sizeof esc, "\\x%02x", (unsigned)c);
+            len = 4;
+        } else if (c == '\\') {
+            esc[0] = esc[1] = '\\';
+            len = 2;
+        } else {
+            esc[0] = (char)c;
+            len = 1;
+        }
+        if (n + len >= cap)
+            break;
+        for (k = 0; k < len; k++)
+            buf[n++] = esc[k];
+    }
+    buf[n] = '\0';
+    return buf;
+}
