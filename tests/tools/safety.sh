@@ -273,6 +273,35 @@ b"
   expect_bad "start: a control character (byte 0x09)" run --config "$cfg" --out "$tmp/never" --set "start=blob:a	b"
   [ ! -e "$tmp/never" ] || fail "a refused start path made the run directory"
   ;;
+edits)
+  # class 6: a hand edit of what a run or an experiment was made with is refused, never silently taken or ignored
+  "$duel" run --config "$cfg" --out "$tmp/r" --generations 2 --quiet
+  cp "$tmp/r/config.ini" "$tmp/config.keep"
+  sed -i 's/^weight_mut_prob = .*/weight_mut_prob = 0.5/' "$tmp/r/config.ini"
+  expect_bad "r/config.ini says 'weight_mut_prob = 0.5' but the run in its checkpoint has 'weight_mut_prob = 0.8': a hand edit" \
+    resume "$tmp/r" --generations 3
+  "$duel" resume "$tmp/r" --generations 3 --set weight_mut_prob=0.5 --quiet || fail "the same change as --set"
+  grep -q "resume: override weight_mut_prob=0.5" "$tmp/r/log.txt" || fail "the override not logged"
+  "$duel" resume "$tmp/r" --generations 4 --quiet || fail "resume after an override"
+  head -20 "$tmp/r/config.ini" > "$tmp/cut.ini"
+  cp "$tmp/r/config.ini" "$tmp/whole.ini"
+  cp "$tmp/cut.ini" "$tmp/r/config.ini"
+  expect_bad "r/config.ini says '.*' but the run in its checkpoint has '.*': a hand edit" resume "$tmp/r" --generations 5
+  cp "$tmp/whole.ini" "$tmp/r/config.ini"
+  # a run against fixed opponents too
+  "$duel" run --config "$cfg" --out "$tmp/f" --generations 2 --set opponents.play=builtin:forager --quiet
+  sed -i 's/^c1 = .*/c1 = 2.5/' "$tmp/f/config.ini"
+  expect_bad "f/config.ini says 'c1 = 2.5' but the run in its checkpoint has 'c1 = 1': a hand edit" resume "$tmp/f" --generations 3
+  # an experiment: plan.ini and configs/ against what the runs were made with
+  "$duel" experiment "$plan" --out "$tmp/x" --set generations=2 --quiet > /dev/null
+  cp "$tmp/x/plan.ini" "$tmp/plan.keep"
+  sed -i 's/^generations = 2/generations = 3/' "$tmp/x/plan.ini"
+  expect_bad "configs/complexify.ini says 'generations = 2' but plan.ini makes 'generations = 3' (line 3): the plan of an experiment cannot change" \
+    experiment resume "$tmp/x"
+  cp "$tmp/plan.keep" "$tmp/x/plan.ini"
+  sed -i 's/^weight_mut_prob = .*/weight_mut_prob = 0.5/' "$tmp/x/configs/fixed-5.ini"
+  expect_bad "runs/fixed-5-[12]/config.ini belongs to another plan" experiment resume "$tmp/x"
+  ;;
 *)
   fail "unknown check $what"
   ;;

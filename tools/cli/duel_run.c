@@ -1329,6 +1329,65 @@ static int duel_check_generations(duel_run *R, uint32_t g)
     return 0;
 }
 
+/* config.ini against what the checkpoint's run was made with: the NEAT
+ * and coevolution parameters it holds (cp NULL for a run against fixed
+ * opponents). A hand edit is never taken silently: a change is made with
+ * --set, which is applied and logged. 0, or 2 after one line naming the
+ * first key that differs. */
+static int duel_check_edits(const duel_config *config_ini, const neat_params *np, const neat_coev_params *cp,
+                            const char *dir, char **sets, uint32_t n_sets)
+{
+    duel_config file = *config_ini, ck = *config_ini;
+    char *a = NULL, *b = NULL, err[600];
+    size_t alen = 0, blen = 0;
+    FILE *fa, *fb;
+    int r = 0;
+    uint32_t k;
+    ck.neat = *np;
+    if (cp != NULL)
+        ck.coev = *cp;
+    /* a key this resume sets is a change made the right way, on both sides */
+    for (k = 0; k < n_sets; k++)
+        if (duel_config_set(&file, sets[k], err, sizeof err) != 0 || duel_config_set(&ck, sets[k], err, sizeof err) != 0)
+            return 2; /* not reached: the same overrides were applied before */
+    fa = open_memstream(&a, &alen);
+    fb = open_memstream(&b, &blen);
+    if (fa == NULL || fb == NULL) {
+        if (fa != NULL)
+            fclose(fa);
+        if (fb != NULL)
+            fclose(fb);
+        free(a);
+        free(b);
+        fprintf(stderr, "duel_evolve: resume: out of memory\n");
+        return 1;
+    }
+    duel_config_dump(fa, &file);
+    duel_config_dump(fb, &ck);
+    if (fclose(fa) != 0 || fclose(fb) != 0) {
+        fprintf(stderr, "duel_evolve: resume: out of memory\n");
+        r = 1;
+    } else if (alen != blen || memcmp(a, b, alen) != 0) {
+        /* the first line that differs, both ways */
+        const char *pa = a, *pb = b;
+        while (*pa != '\0' && *pb != '\0') {
+            size_t la = strcspn(pa, "\n"), lb = strcspn(pb, "\n");
+            if (la != lb || memcmp(pa, pb, la) != 0) {
+                fprintf(stderr, "duel_evolve: %s/config.ini says '%.*s' but the run in its checkpoint has '%.*s': "
+                                "a hand edit of config.ini is not taken (give a change as --set KEY=VALUE, which is "
+                                "applied and logged, or restore config.ini)\n", dir, (int)la, pa, (int)lb, pb);
+                break;
+            }
+            pa += la + (pa[la] == '\n');
+            pb += lb + (pb[lb] == '\n');
+        }
+        r = 2;
+    }
+    free(a);
+    free(b);
+    return r;
+}
+
 static int duel_resume_main(int argc, char **argv)
 {
     duel_run R;
@@ -1450,6 +1509,11 @@ static int duel_resume_main(int argc, char **argv)
     } else if (R.cfg.opp.n > 0) {
         size_t tlen = 0;
         const uint8_t *tag = neat_pop_game(pop, &tlen);
+        if ((e = duel_check_edits(&before, neat_pop_params(pop), NULL, R.dir, sets, n_sets)) != 0) {
+            neat_pop_free(pop);
+            duel_run_free(&R);
+            return e;
+        }
         if (duel_check_tag(&R, tag, tlen, path) != 0) {
             neat_pop_free(pop);
             duel_run_free(&R);
@@ -1474,6 +1538,11 @@ static int duel_resume_main(int argc, char **argv)
                     (unsigned long long)neat_coev_seed(R.coev), R.cfg.seed);
             duel_run_free(&R);
             return 2;
+        }
+        if ((e = duel_check_edits(&before, neat_pop_params(neat_coev_pop(R.coev, 0)), neat_coev_get_params(R.coev),
+                                  R.dir, sets, n_sets)) != 0) {
+            duel_run_free(&R);
+            return e;
         }
         if (duel_check_start(&R, path) != 0 || duel_check_tag(&R, tag, tlen, path) != 0) {
             duel_run_free(&R);

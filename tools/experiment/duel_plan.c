@@ -213,6 +213,43 @@ static char *duel_plan_cfg_text(const duel_config *cfg)
     return text;
 }
 
+/* An experiment directory's plan.ini and its configs/NAME.ini must say the same: the configuration with plan.ini's
+ * overrides applied again is the configuration. An edit of either after the experiment started would be ignored
+ * (plan.ini) or taken by the runs not yet begun only (configs/): refused instead. 0, or -1 with err. */
+static int duel_plan_agrees(const duel_plan *p, const duel_plan_method *m, const char *path, char *err,
+                            size_t err_len)
+{
+    duel_config c = m->cfg;
+    char msg[1200], la[300], lb[300], *text;
+    uint32_t k, line;
+    for (k = 0; k < p->n_sets + m->n_sets; k++) {
+        const char *set = k < p->n_sets ? p->sets[k] : m->sets[k - p->n_sets];
+        if (duel_config_set(&c, set, msg, sizeof msg) != 0) {
+            snprintf(err, err_len, "[method %s]: plan.ini: %s", m->name, msg);
+            return -1;
+        }
+    }
+    c.seed = p->seed;
+    if (m->start_best) {
+        c.start.kind = DUEL_START_BLOB;
+        strcpy(c.start.path, DUEL_PLAN_BEST_BLOB);
+    }
+    text = duel_plan_cfg_text(&c);
+    if (text == NULL) {
+        snprintf(err, err_len, "out of memory");
+        return -1;
+    }
+    line = duel_plan_diff(m->cfg_text, text, la, lb, sizeof la);
+    free(text);
+    if (line != 0) {
+        snprintf(err, err_len, "%s says '%s' but plan.ini makes '%s' (line %u): the plan of an experiment cannot "
+                               "change once it started (restore them; a changed plan is a new experiment directory)",
+                 path, la, lb, line);
+        return -1;
+    }
+    return 0;
+}
+
 /* Every method's configuration: its preset (or, from_dir, DIR/configs/NAME.ini), [all runs], its keys. */
 static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *err, size_t err_len)
 {
@@ -258,6 +295,8 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
             snprintf(err, err_len, "out of memory");
             return -1;
         }
+        if (from_dir && duel_plan_agrees(p, m, path, err, err_len) != 0)
+            return -1;
     }
     return 0;
 }
