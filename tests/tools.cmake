@@ -151,7 +151,7 @@ if(NEAT_SANITIZE)
 else()
   set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan.ini)
 endif()
-foreach(check rundir lock bounds records outputs paths edits)
+foreach(check rundir lock bounds records outputs paths edits counters)
   add_test(NAME tools/safety_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety.sh $<TARGET_FILE:duel_evolve>
                    ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check})

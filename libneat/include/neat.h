@@ -53,7 +53,8 @@ enum neat_error {
     NEAT_E_FORMAT = -6,    /* checkpoint or genome file bytes: bad magic, version, size or value */
     NEAT_E_CRC = -7,       /* checkpoint or genome file checksum mismatch */
     NEAT_E_TRUNCATED = -8, /* checkpoint or genome file shorter than it says */
-    NEAT_E_STATE = -9      /* call out of order (e.g. fitness after epoch) */
+    NEAT_E_STATE = -9,     /* call out of order (e.g. fitness after epoch) */
+    NEAT_E_COUNTERS = -10  /* node ids, innovation numbers, species ids or generations at their limit (2^31 - 1) */
 };
 
 /* ---- allocation: one realloc-style hook ---------------------------------

@@ -152,6 +152,8 @@ const char *neat_strerror(int err)
     case NEAT_E_CRC: return "checksum mismatch";
     case NEAT_E_TRUNCATED: return "truncated";
     case NEAT_E_STATE: return "call out of order";
+    case NEAT_E_COUNTERS: return "a counter (node ids, innovation numbers, species ids or generations) reached its "
+                                 "limit of 2^31 - 1: the run cannot go on";
     default: return "unknown error";
     }
 }

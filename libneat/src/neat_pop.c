@@ -173,7 +173,7 @@ int neat_pop_epoch(neat_pop *pop)
     if (pop->generation >= NEAT_COUNTER_MAX || pop->iv.next_innov > NEAT_COUNTER_MAX - 3u * pop->p.pop_size ||
         pop->iv.next_node > NEAT_COUNTER_MAX - pop->p.pop_size ||
         pop->next_species_id > NEAT_COUNTER_MAX - pop->p.pop_size)
-        return NEAT_E_TOOBIG;
+        return NEAT_E_COUNTERS;
     for (i = 0; i < pop->p.pop_size; i++) {
         if (!pop->genomes[i].has_fitness) {
             pop->err_index = i;

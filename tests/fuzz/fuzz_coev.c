@@ -55,7 +55,7 @@ static void fc_one(const uint8_t *data, size_t size)
     if (neat_pop_size(neat_coev_pop(c, 0)) <= 512) {
         for (g = 0; g < 2; g++) {
             int err = neat_coev_step(c, fc_play, NULL, &rep);
-            if (err == NEAT_E_NOMEM || err == NEAT_E_TOOBIG)
+            if (err == NEAT_E_NOMEM || err == NEAT_E_TOOBIG || err == NEAT_E_COUNTERS)
                 break;
             if (err != NEAT_OK)
                 __builtin_trap();

@@ -486,6 +486,30 @@ static void test_start_genome_keep_weights(void **state)
     neat_genome_free(&g, NULL);
 }
 
+/* counters near 2^31 - 1 (a start genome's markings): the epoch that would pass the limit says so with its own code,
+ * NEAT_E_COUNTERS, not a blob-format error, and leaves the population as it was */
+static void test_counters_at_their_limit(void **state)
+{
+    neat_params p = small_params(10);
+    neat_pop *pop = NULL;
+    neat_genome g;
+    neat_start st;
+    uint32_t i;
+    (void)state;
+    assert_int_equal(neat_genome_recurrent_hidden(&g, 2, 1, 2, NEAT_DIRECT_INPUTS, NULL), NEAT_OK);
+    g.conns[g.n_conns - 1].innov = 0x7ffffff0u;
+    st.genome = &g;
+    st.keep_weights = 0;
+    assert_int_equal(neat_pop_create(&pop, &p, &st, 1, NULL), NEAT_OK);
+    for (i = 0; i < 10; i++)
+        assert_int_equal(neat_pop_set_fitness(pop, i, 1.0 + i), NEAT_OK);
+    assert_int_equal(neat_pop_epoch(pop), NEAT_E_COUNTERS);
+    assert_int_equal(neat_pop_generation(pop), 0);
+    assert_non_null(strstr(neat_strerror(NEAT_E_COUNTERS), "2^31 - 1"));
+    neat_pop_free(pop);
+    neat_genome_free(&g, NULL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -506,6 +530,7 @@ int main(void)
         cmocka_unit_test(test_create_rejects_bad_arguments),
         cmocka_unit_test(test_create_rejects_start_with_wrong_layout),
         cmocka_unit_test(test_start_genome_keep_weights),
+        cmocka_unit_test(test_counters_at_their_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

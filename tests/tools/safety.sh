@@ -302,6 +302,36 @@ edits)
   sed -i 's/^weight_mut_prob = .*/weight_mut_prob = 0.5/' "$tmp/x/configs/fixed-5.ini"
   expect_bad "runs/fixed-5-[12]/config.ini belongs to another plan" experiment resume "$tmp/x"
   ;;
+counters)
+  # class 8: a start genome whose node ids or innovation numbers leave the run no room is refused at load, naming
+  # the genome (it used to pass every check and stop after generation 0 with a message about blob formats)
+  "$duel" run --config "$cfg" --out "$tmp/src" --generations 1 --set start=hidden:2:inputs --quiet
+  for field in innov node; do
+    python3 - "$tmp/src/champions/gen-00000.genome" "$tmp/$field.genome" "$field" <<'PY'
+import struct, sys, zlib
+b = bytearray(open(sys.argv[1], "rb").read()[:-4])
+at = 20  # magic, version, inputs, outputs
+n_nodes = struct.unpack_from("<I", b, at)[0]
+if sys.argv[3] == "node":  # the last node, a hidden one, renumbered near 2^31 (its connections follow it)
+    last = at + 4 + 5 * (n_nodes - 1)
+    old = struct.unpack_from("<I", b, last)[0]
+    struct.pack_into("<I", b, last, 0x7FFFFFF0)
+    c_at = at + 4 + 5 * n_nodes
+    for k in range(struct.unpack_from("<I", b, c_at)[0]):
+        for off in (0, 4):
+            if struct.unpack_from("<I", b, c_at + 4 + 21 * k + off)[0] == old:
+                struct.pack_into("<I", b, c_at + 4 + 21 * k + off, 0x7FFFFFF0)
+else:  # the last connection's innovation number
+    c_at = at + 4 + 5 * n_nodes
+    n = struct.unpack_from("<I", b, c_at)[0]
+    struct.pack_into("<I", b, c_at + 4 + 21 * (n - 1) + 8, 0x7FFFFFF0)
+open(sys.argv[2], "wb").write(bytes(b) + struct.pack("<I", zlib.crc32(bytes(b))))
+PY
+    "$duel" inspect "$tmp/$field.genome" > /dev/null || fail "the crafted $field genome does not load"
+    expect_bad "$field.genome: start genome with .* 2147483632, more than 1073741823: it would leave the run too few" \
+      run --config "$cfg" --out "$tmp/never-$field" --set "start=genome:$tmp/$field.genome"
+  done
+  ;;
 *)
   fail "unknown check $what"
   ;;

@@ -179,6 +179,23 @@ int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t 
         neat_genome_free(g, NULL);
         return -1;
     }
+    if (!e) {
+        /* the run's own node ids and innovation numbers come after the start's, up to 2^31 - 1: a start near
+         * that limit would load and then stop the run after a few generations (NEAT_E_COUNTERS) */
+        uint32_t k, node = 0, innov = 0;
+        for (k = 0; k < g->n_nodes; k++)
+            node = g->nodes[k].id > node ? g->nodes[k].id : node;
+        for (k = 0; k < g->n_conns; k++)
+            innov = g->conns[k].innov > innov ? g->conns[k].innov : innov;
+        if (node > DUEL_START_MAX_COUNTER || innov > DUEL_START_MAX_COUNTER) {
+            snprintf(err, err_len, "%s: start genome with %s %u, more than %u: it would leave the run too few of "
+                                   "its own (every counter stops at 2^31 - 1)", cfg->start.path,
+                     node > DUEL_START_MAX_COUNTER ? "node id" : "innovation number",
+                     node > DUEL_START_MAX_COUNTER ? node : innov, DUEL_START_MAX_COUNTER);
+            neat_genome_free(g, NULL);
+            return -1;
+        }
+    }
     if (e) {
         snprintf(err, err_len, "start: %s", neat_strerror(e));
         neat_genome_free(g, NULL);

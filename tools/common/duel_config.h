@@ -19,6 +19,8 @@ enum duel_start_kind {
 };
 #define DUEL_START_MAX_HIDDEN 240 /* 16 + 240 nodes: the blob format's 256 */
 #define DUEL_START_MAX_PATH 4096
+/* the largest node id or innovation number a start genome may hold: half of every counter's 2^31 - 1 stays the run's */
+#define DUEL_START_MAX_COUNTER 0x3fffffffu
 
 typedef struct duel_start {
     int kind;                 /* enum duel_start_kind */
