@@ -145,17 +145,6 @@ foreach(check ini bench-ini lost-checkpoint trace links stdout)
                    ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${check})
 endforeach()
 
-# issue 40: files that are not ours, records rebuilt or refused, bounded reads, the lock (tests/tools/safety.sh)
-if(NEAT_SANITIZE)
-  set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan-asan.ini)
-else()
-  set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan.ini)
-endif()
-foreach(check rundir lock bounds records outputs paths edits counters)
-  add_test(NAME tools/safety_${check}
-           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety.sh $<TARGET_FILE:duel_evolve>
-                   ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check})
-endforeach()
 
 # faults: every write, fsync and rename of a short run and its resume failing in turn (an LD_PRELOAD shim)
 add_library(fault_shim MODULE tools/fault_shim.c)
@@ -171,6 +160,18 @@ else()
   set(NEAT_FAULT_STRIDE 1)
   set(NEAT_FAULT_CFG ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini)
 endif()
+# issue 40: files that are not ours, records rebuilt or refused, bounded reads, the lock (tests/tools/safety.sh)
+if(NEAT_SANITIZE)
+  set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan-asan.ini)
+else()
+  set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan.ini)
+endif()
+foreach(check rundir lock bounds records outputs paths edits counters small)
+  add_test(NAME tools/safety_${check}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety.sh $<TARGET_FILE:duel_evolve>
+                   ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check} $<TARGET_FILE:fault_shim>)
+endforeach()
+
 add_test(NAME tools/duel_run_faults
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/fault.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:fault_shim>
                  ${NEAT_FAULT_CFG} ${NEAT_FAULT_STRIDE})

@@ -332,6 +332,51 @@ PY
       run --config "$cfg" --out "$tmp/never-$field" --set "start=genome:$tmp/$field.genome"
   done
   ;;
+small)
+  # class 10: CSV quoting, a cache saved as compare goes and merged under a lock, names escaped, file: paths for
+  # ffmpeg. SHIM (the 5th argument) is tests/tools/fault_shim.c, whose trace counts the cache's renames.
+  shim=$5
+  # under the sanitizer build the shim comes before libasan: tell ASan that is fine
+  export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
+  cd "$tmp"
+  for s in 1 2 3 4 5 6 7 8; do "$duel" run --config "$cfg" --generations 12 --seed "$s" --out "r$s" --quiet; done
+  mv r1 "r,1"
+  "$duel" compare "r,1" r2 --against "r,1" r2 r3 --csv q.csv > /dev/null
+  python3 -c 'import csv, sys
+rows = list(csv.reader(open("q.csv")))
+assert all(len(r) == 12 for r in rows), rows
+assert sorted(r[0] for r in rows[1:]) == ["r,1", "r,1", "r2", "r2"], rows' || fail "compare --csv: $(cat q.csv)"
+  mv "r,1" r1
+  # every chunk of comparisons is saved at once: a killed compare keeps what it played
+  all="r1 r2 r3 r4 r5 r6 r7 r8"
+  # shellcheck disable=SC2086
+  NEAT_FAULT_TRACE="$tmp/trace" LD_PRELOAD="$shim" "$duel" compare $all --against $all --threads 1 --cache c.csv > c.txt
+  n=$(grep -c "^rename .*c.csv$" "$tmp/trace" || true)
+  jobs=$(sed -n 's/.*, \([0-9]*\) comparisons of 288 games.*/\1/p' c.txt)
+  [ "$jobs" -gt 64 ] || fail "too few comparisons to test the saving: $(head -1 c.txt)"
+  [ "$n" -ge 3 ] || fail "the cache was saved $n times for $jobs comparisons (once a chunk of at most 32 expected)"
+  # two compares of one cache at once lose nothing (merged under c2.csv.lock)
+  # shellcheck disable=SC2086
+  "$duel" compare r1 r2 r3 r4 --against $all --cache c2.csv > /dev/null &
+  p1=$!
+  # shellcheck disable=SC2086
+  "$duel" compare r5 r6 r7 r8 --against $all --cache c2.csv > /dev/null
+  wait "$p1"
+  [ "$(sort c.csv | md5sum)" = "$(sort c2.csv | md5sum)" ] || fail "concurrent compares lost cache entries"
+  # names from LCM messages (here a file name) are printed with control bytes escaped: one line stays one line
+  cp r2/champions/gen-00003.blob "a
+b.blob"
+  "$duel" play "a
+b.blob" builtin:forager --lcm-log g.lcm > /dev/null
+  "$duel" log info g.lcm > info.txt
+  grep -q 'west a\\x0ab.blob, east' info.txt || fail "log info: $(grep game: info.txt)"
+  # ffmpeg reads the frames through file: (a directory named like a URL is never fetched)
+  if command -v ffmpeg > /dev/null; then
+    "$duel" render builtin:idle builtin:forager --out "http://127.0.0.1:9/f" --every 300 --video v.mp4 > /dev/null ||
+      fail "render into a directory named like a URL"
+    [ -s v.mp4 ] || fail "no video"
+  fi
+  ;;
 *)
   fail "unknown check $what"
   ;;

@@ -16,6 +16,7 @@
 #include "duel_files.h"
 #include "duel_outputs.h"
 #include "duel_perf.h"
+#include "duel_text.h"
 
 typedef struct duel_cmp_stats {
     double mean, sd;
@@ -46,8 +47,10 @@ static void duel_cmp_write_csv(FILE *f, const void *ctx)
     for (k = 0; k < m->n_pairs; k++) {
         const duel_perf_pair *p = &m->pairs[k];
         const duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
-        fprintf(f, "%s,%u,%u,%s,%u,%u,%.0f,%.6f,%u,%.0f,%.6f,", c->dir, c->n_levels,
-                c->levels[c->n_levels - 1].generation, r->dir, r->n_levels, p->highest,
+        duel_csv_field(f, c->dir);
+        fprintf(f, ",%u,%u,", c->n_levels, c->levels[c->n_levels - 1].generation);
+        duel_csv_field(f, r->dir);
+        fprintf(f, ",%u,%u,%.0f,%.6f,%u,%.0f,%.6f,", r->n_levels, p->highest,
                 duel_perf_gen(m, p, p->highest), duel_perf_level_share(m, p, p->highest), p->contiguous,
                 duel_perf_gen(m, p, p->contiguous), duel_perf_level_share(m, p, p->contiguous));
         for (l = 0; l < r->n_levels; l++)

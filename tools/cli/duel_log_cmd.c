@@ -4,6 +4,7 @@
 
 #include "duel_cli.h"
 #include "duel_lcm.h"
+#include "duel_text.h"
 #include "duel_world_cfg.h"
 #include "duel_trace.h"
 
@@ -40,10 +41,13 @@ static int duel_log_info(const char *path)
     for (i = 0; i < g->n_channels; i++)
         printf("channel %s: %llu messages\n", g->channels[i].name, (unsigned long long)g->channels[i].count);
     if (g->started) {
+        char esc_w[1100], esc_e[1100];
         if (g->food_config < 0)
-            printf("game: training food, west %s, east %s\n", g->name[0], g->name[1]);
+            printf("game: training food, west %s, east %s\n", duel_text_escape(g->name[0], esc_w, sizeof esc_w),
+                   duel_text_escape(g->name[1], esc_e, sizeof esc_e));
         else
-            printf("game: food configuration %d, west %s, east %s\n", g->food_config, g->name[0], g->name[1]);
+            printf("game: food configuration %d, west %s, east %s\n", g->food_config,
+                   duel_text_escape(g->name[0], esc_w, sizeof esc_w), duel_text_escape(g->name[1], esc_e, sizeof esc_e));
         if (g->have_world) {
             char label[40];
             printf("world: %s (its rules in the log's world message)\n",

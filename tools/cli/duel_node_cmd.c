@@ -5,6 +5,7 @@
 
 #include "duel_cli.h"
 #include "duel_outputs.h"
+#include "duel_text.h"
 #include "duel_ctrl.h"
 #include "duel_lcm.h"
 #include "duel_world_cfg.h"
@@ -141,6 +142,7 @@ static int duel_node_world_cmd(int argc, char **argv)
     lcm_t *lcm;
     int i, err, have_food = 0, force = 0;
     const char *world_file = NULL;
+    char esc_w[1100], esc_e[1100];
 
     memset(&o, 0, sizeof o);
     o.food_config = DUEL_TRAINING;
@@ -229,9 +231,11 @@ static int duel_node_world_cmd(int argc, char **argv)
         return duel_node_status(err);
     }
     if (o.food_config < 0)
-        printf("training food, west %s, east %s\n", r.name[0], r.name[1]);
+        printf("training food, west %s, east %s\n", duel_text_escape(r.name[0], esc_w, sizeof esc_w),
+               duel_text_escape(r.name[1], esc_e, sizeof esc_e));
     else
-        printf("food configuration %d, west %s, east %s\n", o.food_config, r.name[0], r.name[1]);
+        printf("food configuration %d, west %s, east %s\n", o.food_config, duel_text_escape(r.name[0], esc_w, sizeof esc_w),
+               duel_text_escape(r.name[1], esc_e, sizeof esc_e));
     printf("%s after %u steps\n", duel_lcm_outcome_text(r.res.outcome, r.forfeit), (unsigned)r.res.steps);
     printf("energy: west %.6f, east %.6f; food eaten: west %u, east %u\n", r.res.energy[0] / 65536.0,
            r.res.energy[1] / 65536.0, (unsigned)r.res.eaten[0], (unsigned)r.res.eaten[1]);

@@ -13,6 +13,7 @@
 #include "duel_exec.h"
 #include "duel_files.h"
 #include "duel_outputs.h"
+#include "duel_text.h"
 #include "duel_render.h"
 #include "duel_replay.h"
 #include "duel_world_cfg.h"
@@ -234,6 +235,9 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
     size_t i, j = 0;
     int argc = 0, st;
 
+    /* "file:" first, as for the output: a directory named like a URL (http://...) is never fetched */
+    memcpy(pattern, "file:", 5);
+    j = 5;
     for (i = 0; dir[i] != '\0' && j + 2 < sizeof pattern; i++) { /* '%' is the pattern's escape */
         if (dir[i] == '%')
             pattern[j++] = '%';
@@ -477,10 +481,13 @@ int duel_cmd_render(int argc, char **argv)
 
     if (rc == 0) {
         const duel_frame *last = &rep.frames[rep.n - 1];
+        char esc_w[1100], esc_e[1100];
         if (rep.food_config < 0)
-            printf("training food, west %s, east %s: ", rep.west, rep.east);
+            printf("training food, west %s, east %s: ", duel_text_escape(rep.west, esc_w, sizeof esc_w),
+                   duel_text_escape(rep.east, esc_e, sizeof esc_e));
         else
-            printf("food configuration %d, west %s, east %s: ", rep.food_config, rep.west, rep.east);
+            printf("food configuration %d, west %s, east %s: ", rep.food_config, duel_text_escape(rep.west, esc_w, sizeof esc_w),
+                   duel_text_escape(rep.east, esc_e, sizeof esc_e));
         printf("%s after %u steps\n", duel_outcome_text(last->ev.outcome), (unsigned)last->t);
         if (every == 1)
             printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every step and the final state)\n",

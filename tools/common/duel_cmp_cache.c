@@ -1,10 +1,13 @@
 /* duel_cmp_cache.c - the comparison cache: a CSV of (world, blob hash, blob hash, tally), the world the rules' identity. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fcntl.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include "duel_cmp_cache.h"
 #include "duel_files.h"
@@ -236,14 +239,40 @@ bad:
     return -1;
 }
 
+/* Another compare may have saved entries since this one opened the file: they are taken in (a comparison's
+ * result is the same whoever played it), under PATH.lock, so that two compares of one candidate lose nothing. */
+static void duel_cmp_cache_merge(duel_cmp_cache *c)
+{
+    duel_cmp_cache disk;
+    char err[600];
+    size_t k;
+    if (duel_cmp_cache_open(&disk, c->path, err, sizeof err) != 0)
+        return; /* missing, or damaged since: ours replaces it */
+    for (k = 0; k < disk.n; k++)
+        if (duel_cmp_cache_find(c, disk.e[k].world, disk.e[k].a, disk.e[k].b) == NULL &&
+            duel_cmp_cache_add(c, disk.e[k].world, disk.e[k].a, disk.e[k].b, &disk.e[k].tally) != 0)
+            break;
+    duel_cmp_cache_free(&disk);
+}
+
 int duel_cmp_cache_save(duel_cmp_cache *c)
 {
-    char *text = NULL;
+    char *text = NULL, lock[4210];
     size_t len = 0, k;
     FILE *mem;
-    int r;
+    int r, fd = -1;
     if (!c->dirty)
         return 0;
+    /* PATH.lock: held while the file is read back and replaced (a lock that cannot be made: no merge) */
+    if ((size_t)snprintf(lock, sizeof lock, "%s.lock", c->path) < sizeof lock) {
+        fd = open(lock, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+        if (fd >= 0 && flock(fd, LOCK_EX) != 0) {
+            close(fd);
+            fd = -1;
+        }
+    }
+    if (fd >= 0)
+        duel_cmp_cache_merge(c);
     mem = open_memstream(&text, &len);
     if (mem == NULL)
         return -1;
@@ -254,10 +283,14 @@ int duel_cmp_cache_save(duel_cmp_cache *c)
                 c->e[k].tally.wins_b, c->e[k].tally.draws, c->e[k].tally.timeouts);
     if (fclose(mem) != 0) {
         free(text);
+        if (fd >= 0)
+            close(fd);
         return -1;
     }
     r = duel_file_replace(c->path, text, len);
     free(text);
+    if (fd >= 0)
+        close(fd); /* the lock goes with it */
     if (r == 0)
         c->dirty = 0;
     return r;

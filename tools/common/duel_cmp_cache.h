@@ -39,8 +39,10 @@ int duel_cmp_cache_is(const uint8_t *head, size_t len, const char *path);
 const duel_tally *duel_cmp_cache_find(const duel_cmp_cache *c, uint64_t world, uint64_t a, uint64_t b);
 /* 0, or -1 when out of memory. */
 int duel_cmp_cache_add(duel_cmp_cache *c, uint64_t world, uint64_t a, uint64_t b, const duel_tally *t);
-/* Writes the file (temporary, then rename) when something was added. 0 or
- * -1 (errno set). */
+/* Writes the file (temporary, then rename) when something was added, first
+ * taking in what another process saved there meanwhile, under PATH.lock
+ * (flock): two compares of one candidate lose no entry. 0 or -1 (errno
+ * set). */
 int duel_cmp_cache_save(duel_cmp_cache *c);
 void duel_cmp_cache_free(duel_cmp_cache *c);
 

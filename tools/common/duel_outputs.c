@@ -20,7 +20,7 @@ int duel_is_run_file(const char *name)
 {
     static const char *const names[] = {"config.ini", "generations.csv", "dominance.csv", "strength.csv",
                                         "checkpoint.bin", "ladder.csv", "compare-cache.csv", "log.txt",
-                                        "champions", "games", "opponents", ".lock"};
+                                        "champions", "games", "opponents", ".lock", "compare-cache.csv.lock"};
     size_t i, n = strlen(name);
     for (i = 0; i < sizeof names / sizeof names[0]; i++) {
         size_t k = strlen(names[i]);

@@ -150,9 +150,18 @@ double duel_perf_gen(const duel_perf *m, const duel_perf_pair *p, uint32_t level
     return level == 0 ? 0.0 : (double)m->runs[p->rank].levels[level - 1].generation;
 }
 
-static void duel_perf_progress(void *ud, size_t done, size_t n)
+/* The progress line over the chunks: where this chunk starts, of how many in all. */
+typedef struct duel_perf_chunk {
+    const char *pre;
+    size_t base, total;
+} duel_perf_chunk;
+
+static void duel_perf_chunk_progress(void *ud, size_t done, size_t n)
 {
-    fprintf(stderr, "\r%s%zu/%zu comparisons played%s", (const char *)ud, done, n, done == n ? "\n" : "");
+    const duel_perf_chunk *ch = (const duel_perf_chunk *)ud;
+    size_t all = ch->base + done;
+    (void)n;
+    fprintf(stderr, "\r%s%zu/%zu comparisons played%s", ch->pre, all, ch->total, all == ch->total ? "\n" : "");
 }
 
 #define DUEL_PERF_OOM(m_)                                                                                             \
@@ -278,6 +287,9 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     duel_cmp_cache *caches = NULL, shared;
     duel_pair *jobs = NULL;
     uint32_t *slot = NULL;
+    uint64_t *job_key = NULL;         /* the cache key of each job: (candidate's top, ranking level) */
+    duel_cmp_cache **job_cache = NULL; /* and the cache it goes into */
+    int save_failed = 0;
     uint32_t i, k, l, n_jobs = 0;
     uint64_t world = 0;
     size_t total = 0, at = 0;
@@ -314,8 +326,10 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     for (k = 0; k < m->n_pairs; k++)
         total += m->runs[m->pairs[k].rank].n_levels;
     jobs = (duel_pair *)calloc(total + 1, sizeof *jobs);
+    job_key = (uint64_t *)calloc(2 * (total + 1), sizeof *job_key);
     slot = (uint32_t *)calloc(total + 1, sizeof *slot);
-    if (jobs == NULL || slot == NULL)
+    job_cache = (duel_cmp_cache **)calloc(total + 1, sizeof *job_cache);
+    if (jobs == NULL || slot == NULL || job_cache == NULL || job_key == NULL)
         DUEL_PERF_OOM(m);
     for (k = 0; k < m->n_pairs; k++) {
         duel_perf_pair *p = &m->pairs[k];
@@ -330,6 +344,9 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
             } else {
                 jobs[n_jobs].a = &c->levels[c->n_levels - 1].ctrl;
                 jobs[n_jobs].b = &r->levels[l].ctrl;
+                job_key[2 * n_jobs] = c->top_hash;
+                job_key[2 * n_jobs + 1] = r->hash[l];
+                job_cache[n_jobs] = cc;
                 slot[at] = n_jobs++;
             }
         }
@@ -339,32 +356,45 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
                         "have to be played\n", pre, n_jobs, jobs[0].a->name, jobs[0].b->name);
         goto out;
     }
-    if (n_jobs > 0 && duel_pairs_play(&m->world, jobs, n_jobs, o->threads, o->progress ? duel_perf_progress : NULL,
-                                      (void *)pre) != 0) {
-        fprintf(stderr, "duel_evolve: %sa comparison failed (out of memory)\n", pre);
-        rc = 1;
-        goto out;
+    /* played a chunk at a time, each chunk's results saved in the caches at once: a compare killed midway keeps
+     * what it played (a chunk is long enough for the threads to stay busy: its last comparisons are its only
+     * idle time) */
+    {
+        duel_perf_chunk ch;
+        size_t from, chunk = n_jobs / 16 > 32 ? n_jobs / 16 : 32;
+        ch.pre = pre;
+        ch.total = n_jobs;
+        for (from = 0; from < n_jobs; from += chunk) {
+            size_t n = n_jobs - from < chunk ? n_jobs - from : chunk, j;
+            ch.base = from;
+            if (duel_pairs_play(&m->world, jobs + from, n, o->threads, o->progress ? duel_perf_chunk_progress : NULL,
+                                &ch) != 0) {
+                fprintf(stderr, "duel_evolve: %sa comparison failed (out of memory)\n", pre);
+                rc = 1;
+                goto out;
+            }
+            for (j = from; j < from + n; j++)
+                if (duel_cmp_cache_add(job_cache[j], world, job_key[2 * j], job_key[2 * j + 1], &jobs[j].tally) != 0)
+                    DUEL_PERF_OOM(m);
+            for (i = 0; i < (o->cache_path ? 1u : m->n_cand); i++) {
+                duel_cmp_cache *cc = o->cache_path ? &shared : &caches[i];
+                if (duel_cmp_cache_save(cc) != 0 && !save_failed) {
+                    save_failed = 1;
+                    fprintf(stderr, "duel_evolve: %s%s: cannot write the cache (%s); the results are not affected\n",
+                            pre, cc->path, strerror(errno));
+                }
+            }
+        }
     }
     m->played = n_jobs;
-    /* into the pairs and the caches, which are saved at once */
+    /* into the pairs */
     for (k = 0, at = 0; k < m->n_pairs; k++) {
         duel_perf_pair *p = &m->pairs[k];
-        duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
-        duel_cmp_cache *cc = o->cache_path ? &shared : &caches[p->cand];
-        for (l = 0; l < r->n_levels; l++, at++) {
-            if (slot[at] == UINT32_MAX)
-                continue;
-            p->t[l] = jobs[slot[at]].tally;
-            if (duel_cmp_cache_add(cc, world, c->top_hash, r->hash[l], &p->t[l]) != 0)
-                DUEL_PERF_OOM(m);
-        }
+        duel_perf_run *r = &m->runs[p->rank];
+        for (l = 0; l < r->n_levels; l++, at++)
+            if (slot[at] != UINT32_MAX)
+                p->t[l] = jobs[slot[at]].tally;
         duel_perf_readings(p, r->n_levels);
-    }
-    for (i = 0; i < (o->cache_path ? 1u : m->n_cand); i++) {
-        duel_cmp_cache *cc = o->cache_path ? &shared : &caches[i];
-        if (duel_cmp_cache_save(cc) != 0)
-            fprintf(stderr, "duel_evolve: %s%s: cannot write the cache (%s); the results are not affected\n", pre,
-                    cc->path, strerror(errno));
     }
 
     /* per candidate: the means over its rankings */
@@ -388,6 +418,8 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
 out:
     free(jobs);
     free(slot);
+    free(job_cache);
+    free(job_key);
     for (i = 0; caches != NULL && i < m->n_cand; i++)
         duel_cmp_cache_free(&caches[i]);
     free(caches);

@@ -1,5 +1,6 @@
 /* duel_text.c - text from input made safe to print in a message: control bytes escaped, so that one message stays one line. */
 #include <stdio.h>
+#include <string.h>
 
 #include "duel_text.h"
 
@@ -27,4 +28,19 @@ const char *duel_text_escape(const char *s, char *buf, size_t cap)
     }
     buf[n] = '\0';
     return buf;
+}
+
+void duel_csv_field(FILE *f, const char *s)
+{
+    if (strpbrk(s, ",\"\r\n") == NULL) {
+        fputs(s, f);
+        return;
+    }
+    fputc('"', f);
+    for (; *s != '\0'; s++) {
+        if (*s == '"')
+            fputc('"', f);
+        fputc(*s, f);
+    }
+    fputc('"', f);
 }

@@ -3,8 +3,13 @@
 #define DUEL_TEXT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* s with every byte below 0x20 and 0x7f written as \xNN (and '\' as "\\"), cut to fit buf (cap >= 1). buf. */
 const char *duel_text_escape(const char *s, char *buf, size_t cap);
+
+/* s as one CSV field (RFC 4180): as it is, or in double quotes (each '"' doubled) when it holds a comma, a
+ * quote, a CR or a LF. */
+void duel_csv_field(FILE *f, const char *s);
 
 #endif /* DUEL_TEXT_H */
