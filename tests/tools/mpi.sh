@@ -126,6 +126,21 @@ faults)
   # resumed with another number of ranks: the run one process plays
   "${mpi[@]}" -np 2 "$duel" resume K --quiet
   same_run ref K
+  # a frozen rank (SIGSTOP) ends the job after its deadline (DUEL_MPI_WAIT s here, 60 s by default, plus 0.25 s
+  # a game in flight), with a line naming it; it used to hold the job for ever
+  "${mpi[@]}" -np 3 -x DUEL_MPI_WAIT=2 "$duel" run --config "$cfg" --out F --generations 40 --quiet 2> f.err & job=$!
+  wait_gens F $job 3
+  frozen=$(rank_pid 1 "run --config $cfg --out F")
+  kill -STOP "$frozen"
+  start=$SECONDS rc=0
+  wait $job || rc=$?
+  kill -9 "$frozen" 2>/dev/null || true
+  [ "$rc" -ne 0 ] || fail "the job went on without the frozen rank"
+  [ $((SECONDS - start)) -lt 60 ] || fail "the job took $((SECONDS - start)) s to end"
+  grep -q "mpi: rank 1 has not answered for [0-9]* s (.* games in flight to it, at most [0-9]* s allowed): it is frozen" \
+    f.err || fail "no line names the frozen rank: $(cat f.err)"
+  "$duel" resume F --quiet
+  same_run ref F
   # Ctrl-C to mpirun: rank 0 finishes the generation, saves it and releases the others
   "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out I --generations 40 2> i.err & job=$!
   wait_gens I $job 2

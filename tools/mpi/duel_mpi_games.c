@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "duel_mpi_internal.h"
 #include "duel_mpi_wire.h"
@@ -28,6 +29,7 @@
 typedef struct duel_slot {
     int busy;
     size_t from, count;
+    double sent_at; /* CLOCK_MONOTONIC seconds: the deadline counts from here */
     uint8_t *buf;
     size_t cap;
     MPI_Request req;
@@ -138,6 +140,53 @@ static long duel_disp_net(duel_disp *d, const neat_genome *g, const neat_params 
 
 /* Packs games [from, from + count) for peer k into slot s and sends it. 0; 1 when a network could not be encoded
  * (the batch's error is set); -1 when MPI failed. */
+static double duel_disp_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* How long rank 0 waits for a chunk's results before it takes the rank for frozen (SIGSTOP, a machine that
+ * stopped answering: a dead rank ends the job at once, a frozen one would hold it for ever): a base, 60 s
+ * (DUEL_MPI_WAIT seconds in the environment instead), plus 0.25 s a game in flight to that rank, which no game
+ * comes near (the slowest, two 256-node networks for 750 steps, takes well under 0.1 s). docs/cluster.md. */
+static double duel_disp_deadline(const duel_peer *pe)
+{
+    static double base = -1.0;
+    size_t games = pe->slot[0].count + (pe->slot[1].busy ? pe->slot[1].count : 0);
+    if (base < 0.0) {
+        const char *v = getenv("DUEL_MPI_WAIT");
+        char *end;
+        double b = v != NULL ? strtod(v, &end) : 0.0;
+        base = v != NULL && end != v && *end == '\0' && b > 0.0 && b <= 1e6 ? b : 60.0;
+    }
+    return base + 0.25 * (double)games;
+}
+
+/* Ends the job when a rank has held a chunk past its deadline: one line naming it, then MPI_Abort (MPI_Finalize
+ * would wait for the frozen rank). */
+static void duel_disp_check_deadlines(const duel_disp *d)
+{
+    double now = duel_disp_now();
+    int k;
+    for (k = 0; k < d->n_peers; k++) {
+        const duel_peer *pe = &d->peers[k];
+        double limit;
+        if (!pe->slot[0].busy)
+            continue;
+        limit = duel_disp_deadline(pe);
+        if (now - pe->slot[0].sent_at > limit) {
+            fprintf(stderr, "duel_evolve: mpi: rank %d has not answered for %.0f s (%zu games in flight to it, at "
+                            "most %.0f s allowed): it is frozen or cut off; ending the job (resume the run to go "
+                            "on)\n", pe->rank, now - pe->slot[0].sent_at,
+                    pe->slot[0].count + (pe->slot[1].busy ? pe->slot[1].count : 0), limit);
+            fflush(stderr);
+            MPI_Abort(MPI_COMM_WORLD, 1);
+        }
+    }
+}
+
 static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot *s, size_t from, size_t count)
 {
     size_t n_all, i, pos, n_new = 0, n_nets = 0;
@@ -233,6 +282,7 @@ static int duel_disp_send(duel_disp *d, duel_games *dg, duel_peer *pe, duel_slot
     s->busy = 1;
     s->from = from;
     s->count = count;
+    s->sent_at = duel_disp_now();
     return 0;
 }
 
@@ -299,8 +349,10 @@ static int duel_disp_poll(void *ud, duel_games *dg)
         size_t i;
         if (MPI_Iprobe(MPI_ANY_SOURCE, DUEL_TAG_RESULT, d->comm, &flag, &st) != MPI_SUCCESS)
             return -1;
-        if (!flag)
+        if (!flag) {
+            duel_disp_check_deadlines(d);
             break;
+        }
         MPI_Get_count(&st, MPI_BYTE, &count);
         for (k = 0; k < d->n_peers; k++)
             if (d->peers[k].rank == st.MPI_SOURCE)
