@@ -43,7 +43,7 @@ static const duel_help_entry duel_help_entries[] = {
      "  --set key=value          override one parameter; repeatable\n"},
     {"ladder",
      "usage: duel_evolve ladder DIR [--top | --levels L1-L2] [--against NAME,...] [--world NAME|FILE] [--csv FILE] "
-     "[--json]\n"
+     "[--force] [--json]\n"
      "Plays every dominant strategy of a run against each built-in strategy (idle, spinner, forager,\n"
      "hunter, forager-hunter) in 288-game comparisons, in the run's world, and writes DIR/ladder.csv and a\n"
      "table.\n"
@@ -54,7 +54,9 @@ static const duel_help_entry duel_help_entries[] = {
      "                           written only there: DIR/ladder.csv keeps the whole ladder)\n"
      "  --world NAME|FILE        play in this world (a named one, or an INI file's [world]) instead of the\n"
      "                           run's; the ladder then goes only where --csv says\n"
-     "  --json                   the results as one JSON object on stdout instead of the table\n"},
+     "  --json                   the results as one JSON object on stdout instead of the table\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"compare",
      "usage: duel_evolve compare RUN... --against RUN... [options]\n"
      "The paper's performance measure: each candidate run's highest dominant against every dominant of\n"
@@ -64,7 +66,9 @@ static const duel_help_entry duel_help_entries[] = {
      "  --json FILE              the summary and every pair as JSON\n"
      "  --csv FILE               one row per (candidate, ranking) pair\n"
      "  --cache FILE             one cache of played comparisons (default: each candidate's\n"
-     "                           compare-cache.csv)\n"},
+     "                           compare-cache.csv)\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"experiment",
      "usage: duel_evolve experiment PLAN --out DIR [options]\n"
      "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"
@@ -82,7 +86,7 @@ static const duel_help_entry duel_help_entries[] = {
      "  report DIR               write the report again from the files, playing nothing\n"},
     {"play",
      "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
-     "[--lcm-log FILE.lcm] [--world NAME|FILE] [--json]\n"
+     "[--lcm-log FILE.lcm] [--force] [--world NAME|FILE] [--json]\n"
      "One game (or a 288-game comparison) between A and B: champion blobs, genome files or\n"
      "builtin:NAME (idle, spinner, forager, hunter, forager-hunter).\n"
      "  --games 1|288            one game (default) or the comparison: every food configuration from\n"
@@ -93,11 +97,13 @@ static const duel_help_entry duel_help_entries[] = {
      "  --lcm-log FILE.lcm       the game as an LCM log (docs/lcm.md)\n"
      "  --world NAME|FILE        the world (a named one, or an INI file's [world]); default: the world of the\n"
      "                           runs the champions come from, else v1\n"
-     "  --json                   the result as one JSON object on stdout (docs/tools.md, \"play --json\")\n"},
+     "  --json                   the result as one JSON object on stdout (docs/tools.md, \"play --json\")\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"node",
      "usage: duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
      "       duel_evolve node world --food K|training --lcm URL [--timeout-ms N] [--wait-ms N] "
-     "[--period-ms N] [--lcm-log FILE.lcm] [--world NAME|FILE]\n"
+     "[--period-ms N] [--lcm-log FILE.lcm [--force]] [--world NAME|FILE]\n"
      "A game between processes over LCM (docs/lcm.md); URL is memq://, file:// or tcpq://HOST:PORT.\n"
      "  --side west|east         the controller's robot\n"
      "  --lcm URL                the LCM provider\n"
@@ -107,7 +113,9 @@ static const duel_help_entry duel_help_entries[] = {
      "                           controller 10000)\n"
      "  --period-ms N            the world's pace, one step per N ms (default 0: as fast as it can)\n"
      "  --lcm-log FILE.lcm       the world records every message it publishes and accepts\n"
-     "  --world NAME|FILE        the world node plays in this world (published first on DUEL_WORLD)\n"},
+     "  --world NAME|FILE        the world node plays in this world (published first on DUEL_WORLD)\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"log",
      "usage: duel_evolve log info FILE.lcm\n"
      "       duel_evolve log dump FILE.lcm [--channel C]\n"
@@ -118,11 +126,13 @@ static const duel_help_entry duel_help_entries[] = {
      "A champion blob's or genome file's nodes and connections (a genome file's genes too), or what a\n"
      "run's checkpoint holds (docs/tools.md, \"inspect\"). No options.\n"},
     {"dot",
-     "usage: duel_evolve dot BLOB|GENOME [-o FILE.dot] [--min-weight W]\n"
+     "usage: duel_evolve dot BLOB|GENOME [-o FILE.dot [--force]] [--min-weight W]\n"
      "The network as Graphviz (dot -Tpng FILE.dot -o FILE.png): hidden nodes in rows by depth, dead\n"
      "ones grey dashed, a legend at the bottom (docs/tools.md, \"dot\").\n"
      "  -o FILE.dot              write to FILE.dot (atomically) instead of stdout\n"
-     "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"},
+     "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"render",
      "usage: duel_evolve render (LOG.lcm | A B [--food K --side west|east --world NAME|FILE]) --out DIR [options]\n"
      "A duel's frames as PNG images (and a video), from an LCM log or from a game played now\n"
@@ -136,15 +146,19 @@ static const duel_help_entry duel_help_entries[] = {
      "  --sensors                draw the rangefinder sectors\n"
      "  --trails                 draw the path each robot's centre has taken so far\n"
      "  --video FILE.mp4         encode the frames with ffmpeg\n"
-     "  --fps F                  the video's frames per second, 1..120 (default 30)\n"},
+     "  --fps F                  the video's frames per second, 1..120 (default 30)\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"render-net",
-     "usage: duel_evolve render-net BLOB|GENOME --out FILE.png [--min-weight W]\n"
+     "usage: duel_evolve render-net BLOB|GENOME --out FILE.png [--force] [--min-weight W]\n"
      "The network drawn by Graphviz as a PNG, as the dot command draws it (docs/render.md).\n"
      "  --out FILE.png           the image to write (atomically)\n"
-     "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"},
+     "  --min-weight W           leave out the connections whose |weight| is below W (0..8; default 0)\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"export",
-     "usage: duel_evolve export BLOB|GENOME --c-array NAME [-o FILE.c] [--header FILE.h]\n"
-     "       duel_evolve export --world NAME|FILE (--c-array NAME [-o FILE.c] | --raw -o FILE)\n"
+     "usage: duel_evolve export BLOB|GENOME --c-array NAME [-o FILE.c] [--header FILE.h] [--force]\n"
+     "       duel_evolve export --world NAME|FILE (--c-array NAME [-o FILE.c] | --raw -o FILE) [--force]\n"
      "The champion as a C array for a firmware, or a world's rules as their canonical bytes\n"
      "(docs/firmware.md).\n"
      "  --c-array NAME           the array's name (a C identifier)\n"
@@ -152,7 +166,9 @@ static const duel_help_entry duel_help_entries[] = {
      "  --header FILE.h          also a header: the array, NAME_BLOB_SIZE, NAME_MEM_SIZE (the bytes nrt_load\n"
      "                           needs), NAME_INPUTS, NAME_OUTPUTS; the .c then includes it\n"
      "  --world NAME|FILE        export a world's rules (a named one, or an INI file's [world]) instead\n"
-     "  --raw                    with --world: the bytes themselves to -o FILE (the host twin's WORLD.bin)\n"},
+     "  --raw                    with --world: the bytes themselves to -o FILE (the host twin's WORLD.bin)\n"
+     "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
+     "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
 };
 
 int duel_help_wanted(int argc, char **argv)

@@ -1307,7 +1307,10 @@ static int duel_check_generations(duel_run *R, uint32_t g)
         return 0;
     duel_path(path, sizeof path, R->dir, "generations.csv");
     if (duel_file_read(path, DUEL_GENERATIONS_MAX_FILE, &text, &len) != 0) {
-        fprintf(stderr, "duel_evolve: %s: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", path, duel_file_strerror(errno));
+        if (errno == ENOENT)
+            fprintf(stderr, "duel_evolve: %s: missing: " DUEL_GENERATIONS_LOST_ADVICE "\n", path);
+        else
+            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, duel_file_strerror(errno));
         return 2;
     }
     /* the complete rows: a torn last one belongs to the generation after the checkpoint, or is lost (below) */

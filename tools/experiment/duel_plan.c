@@ -78,8 +78,8 @@ static int duel_plan_resolve_start(char *set, const char *base, char *err, size_
         return 0;
     if ((size_t)snprintf(joined, sizeof joined, "%s/%s", base, path) >= sizeof joined ||
         realpath(joined, real) == NULL) {
-        snprintf(err, err_len, "%.*s: %s (relative to %s): %s", (int)(path - set), set, path,
-                 base, strlen(joined) >= sizeof joined - 1 ? "path too long" : strerror(errno));
+        snprintf(err, err_len, "%s (relative to %s): %s", set, base,
+                 strlen(joined) >= sizeof joined - 1 ? "path too long" : strerror(errno));
         return -1;
     }
     plen = (size_t)(path - set);
