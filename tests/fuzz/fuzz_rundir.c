@@ -36,6 +36,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FILE *f;
     if (duel_dominance_parse_scores("d.csv", (const char *)data, size, &rows, &n, &scores, err, sizeof err) == 0) {
         uint32_t at = 0;
+        if (size > 0 && data[size - 1] != '\n')
+            __builtin_trap(); /* a cut last row is never dropped silently (issue 40) */
         for (k = 0; k < n; k++) {
             if (rows[k].level != k + 1 || (rows[k].pop[0] != 'A' && rows[k].pop[0] != 'B') || rows[k].scores != at)
                 __builtin_trap();
@@ -57,6 +59,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         size_t ng, k2;
         if (duel_generations_parse("g.csv", (const char *)data, size, &g, &ng, err, sizeof err) == 0) {
             uint32_t done = duel_generations_done(g, ng);
+            if (size > 0 && data[size - 1] != '\n')
+                __builtin_trap(); /* a cut last row is never dropped silently */
+            for (k2 = 0; k2 < ng; k2++) /* no row missing: 0 A, 0 B, 1 A, ... */
+                if (g[k2].generation != k2 / 2 || g[k2].pop != (k2 % 2 ? 'B' : 'A'))
+                    __builtin_trap();
             for (k2 = 0; k2 < ng; k2++)
                 if ((g[k2].pop != 'A' && g[k2].pop != 'B') || (g[k2].pop == 'B' && g[k2].generation >= done))
                     __builtin_trap();
@@ -69,6 +76,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         duel_cmp_cache c;
         if (duel_cmp_cache_parse(&c, "c.csv", (const char *)data, size, err, sizeof err) == 0) {
             size_t i;
+            if (size > 0 && data[size - 1] != '\n')
+                __builtin_trap(); /* a cut last line is refused */
             for (i = 0; i < c.n; i++)
                 if (c.e[i].tally.wins_a + c.e[i].tally.wins_b + c.e[i].tally.draws + c.e[i].tally.timeouts != 288u ||
                     (i > 0 && !(c.e[i - 1].a < c.e[i].a || (c.e[i - 1].a == c.e[i].a && c.e[i - 1].b < c.e[i].b))) ||
