@@ -15,14 +15,22 @@ PKGS="$PKGS openmpi-bin libopenmpi-dev"                                         
 # LCM's TCP hub (lcm.lcm.TCPService, the tests over tcpq://) runs on any Java runtime
 command -v java > /dev/null 2>&1 || PKGS="$PKGS default-jre-headless"
 SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=""
 for p in $PKGS; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
+if [ -n "$missing" ] && [ "$(id -u)" -ne 0 ]; then
+  # not root: apt-get needs sudo, which a bare Debian 12 does not have
+  if ! command -v sudo > /dev/null 2>&1; then
+    echo "deps.sh: packages are missing and installing them needs root: run this as root (su -c ./scripts/setup.sh), or install sudo first (as root: apt-get install sudo; adduser $(id -un) sudo)" >&2
+    exit 1
+  fi
+  SUDO="sudo"
+fi
 if [ -n "$missing" ]; then
   echo "installing:$missing"
-  echo "(apt-get update, then one line per package set up; a bare Debian 12 takes a few minutes)"
+  echo "(apt-get update, then one line per package set up; on a bare Debian 12 apt downloads and unpacks for"
+  echo " several minutes before its first line, then sets up about 600 packages)"
   $SUDO apt-get update -qq
   # the Recommends would add the Arm C++ library, EFI firmware and more that nothing here uses
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends $missing |

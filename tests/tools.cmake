@@ -297,6 +297,11 @@ if(NOT NEAT_SANITIZE AND NOT NEAT_FUZZ)
       set_tests_properties(docs/commands/${name} PROPERTIES FIXTURES_REQUIRED docs_setup)
     endif()
   endforeach()
+  # docs/lcm.md's commands while another process holds the port they name (issue 42)
+  add_test(NAME docs/commands/lcm-port-taken
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/port_taken.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}
+                   ${PROJECT_SOURCE_DIR}/docs/lcm.md ${docs_setup})
+  set_tests_properties(docs/commands/lcm-port-taken PROPERTIES FIXTURES_REQUIRED docs_setup SKIP_RETURN_CODE 77)
   # the experiment's doc plays two whole plans (about 90 s of CPU): started early too
   if(TEST docs/commands/experiment)
     set_tests_properties(docs/commands/experiment PROPERTIES COST 800)

@@ -38,7 +38,7 @@ else
 fi
 pids=() # the process groups of the commands started in the background (LCM's hub, the nodes)
 stop_background() {
-  for p in "${pids[@]}"; do kill -- "-$p" 2> /dev/null || true; done
+  for p in "${pids[@]}"; do kill -- "-$p" 2> /dev/null || kill "$p" 2> /dev/null || true; done
   pids=()
 }
 cleanup() {
@@ -174,7 +174,9 @@ fi
 cd "$work"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 export OMPI_MCA_pml=ob1 OMPI_MCA_btl=self,vader,tcp OMPI_MCA_btl_tcp_if_include=lo OMPI_MCA_oob_tcp_if_include=lo
-block= ran=0 skipped=0 reasons=
+block= ran=0 skipped=0 reasons= doc_port=
+# shellcheck source=/dev/null
+. "$src/tests/lcm/lcm_hub.sh"
 while IFS=$'\t' read -r b cmd; do
   # a block's background processes end with it
   [ "$b" = "$block" ] || stop_background
@@ -188,6 +190,18 @@ while IFS=$'\t' read -r b cmd; do
     continue
   fi
   run=$(reduce "$cmd")
+  # LCM's hub: never the doc's port (another suite, or anything else, may hold it: issue 42), but a free one this
+  # test's own hub is seen listening on; every later command of the doc gets that port in place of the doc's
+  if [[ $run =~ ^java\ -cp\ ([^ ]+)\ lcm\.lcm\.TCPService\ ([0-9]+)\ *\&$ ]]; then
+    doc_port=${BASH_REMATCH[2]}
+    lcm_hub_start java "${BASH_REMATCH[1]}" "$work/.hub" ||
+      fail "$b: LCM's hub did not start: $lcm_hub_error"
+    pids+=("$lcm_hub_pid")
+    echo "-- $b: $run (the hub on free port $lcm_hub_port, standing for $doc_port)"
+    ran=$((ran + 1))
+    continue
+  fi
+  [ -z "$doc_port" ] || run=${run//127.0.0.1:$doc_port/127.0.0.1:$lcm_hub_port}
   echo "-- $b: $run"
   if [ "${run: -1}" = "&" ]; then
     # in a process group of its own, which ends with the block

@@ -19,24 +19,15 @@ trap cleanup EXIT
 skip() { echo "SKIP: $*"; exit 77; }
 ms() { echo $(( $(date +%s%N) / 1000000 )); }
 
-# LCM's TCP hub (liblcm-java) on a free loopback port: sets $hub_port.
+# LCM's TCP hub (liblcm-java) on a free loopback port, checked to be this test's hub: sets $hub_port.
+# shellcheck source=/dev/null
+. "$(dirname "$0")/lcm_hub.sh"
 start_hub() {
   [ -x "$java" ] || skip "no java (Debian default-jre-headless; scripts/deps.sh installs it)"
   [ -f "$jar" ] || skip "no $jar (Debian liblcm-java; scripts/deps.sh installs it)"
-  local try port i
-  for try in 1 2 3 4 5; do
-    port=$(( 20000 + (RANDOM * 32768 + RANDOM + $$) % 40000 ))
-    if (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null; then continue; fi # taken
-    "$java" -cp "$jar" lcm.lcm.TCPService "$port" > "$tmp/hub-$port.log" 2>&1 &
-    local hub=$!
-    pids+=("$hub")
-    for i in $(seq 100); do
-      if (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null; then hub_port=$port; return 0; fi
-      kill -0 "$hub" 2>/dev/null || break # the port went to someone else: try another
-      sleep 0.05
-    done
-  done
-  fail "LCM's TCP hub did not start ($(cat "$tmp"/hub-*.log 2>/dev/null | head -3))"
+  lcm_hub_start "$java" "$jar" "$tmp/hub" || fail "LCM's TCP hub did not start: $lcm_hub_error"
+  pids+=("$lcm_hub_pid")
+  hub_port=$lcm_hub_port
 }
 
 blobs() { "$bench" --write-blobs "$tmp" > /dev/null; }
@@ -140,6 +131,15 @@ bad-input)
   expect_bad "cannot start LCM on 'tcpq://127.0.0.1:1'" node world --food 3 --lcm tcpq://127.0.0.1:1
   ;;
 processes)
+  # a port another hub holds (another suite running at the same time): our hub exits on it, and that is seen as
+  # its failing to start there, never taken for our hub (issue 42)
+  start_hub
+  taken=$hub_port
+  lcm_hub_start "$java" "$jar" "$tmp/hub2" "$taken" || fail "no second hub: $lcm_hub_error"
+  pids+=("$lcm_hub_pid")
+  [ "$lcm_hub_port" != "$taken" ] || fail "a hub was taken to be on port $taken, which another hub holds"
+  lcm_hub_listens "$lcm_hub_pid" "$lcm_hub_port" || fail "the second hub does not listen on its port"
+  grep -qi "address already in use\|bind" "$tmp/hub2-$taken.log" || fail "the taken port: $(cat "$tmp/hub2-$taken.log")"
   # the same game as three processes (world + two controllers) over tcpq:// through LCM's Java hub, and in
   # one process (play): the same states, bit for bit
   blobs
