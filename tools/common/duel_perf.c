@@ -267,6 +267,18 @@ out:
     return rc;
 }
 
+/* Saves the n caches that changed; the first failure is said once (*failed), and changes no result. */
+static void duel_perf_save(duel_cmp_cache *c, uint32_t n, const char *pre, int *failed)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++)
+        if (duel_cmp_cache_save(&c[i]) != 0 && !*failed) {
+            *failed = 1;
+            fprintf(stderr, "duel_evolve: %s%s: cannot write the cache (%s); the results are not affected\n", pre,
+                    c[i].path, strerror(errno));
+        }
+}
+
 /* A cache opened; a file that is not one starts afresh (and is replaced) only with --force. 0 or -1. */
 static int duel_perf_cache_open(duel_cmp_cache *c, const char *path, const duel_perf_opts *o, char *err,
                                 size_t err_len)
@@ -376,16 +388,11 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
             for (j = from; j < from + n; j++)
                 if (duel_cmp_cache_add(job_cache[j], world, job_key[2 * j], job_key[2 * j + 1], &jobs[j].tally) != 0)
                     DUEL_PERF_OOM(m);
-            for (i = 0; i < (o->cache_path ? 1u : m->n_cand); i++) {
-                duel_cmp_cache *cc = o->cache_path ? &shared : &caches[i];
-                if (duel_cmp_cache_save(cc) != 0 && !save_failed) {
-                    save_failed = 1;
-                    fprintf(stderr, "duel_evolve: %s%s: cannot write the cache (%s); the results are not affected\n",
-                            pre, cc->path, strerror(errno));
-                }
-            }
+            duel_perf_save(o->cache_path ? &shared : caches, o->cache_path ? 1u : m->n_cand, pre, &save_failed);
         }
     }
+    /* and once more: a cache that changed without a game (a format-1 file, written back in format 2) */
+    duel_perf_save(o->cache_path ? &shared : caches, o->cache_path ? 1u : m->n_cand, pre, &save_failed);
     m->played = n_jobs;
     /* into the pairs */
     for (k = 0, at = 0; k < m->n_pairs; k++) {
