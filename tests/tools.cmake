@@ -160,7 +160,10 @@ else()
   set(NEAT_FAULT_STRIDE 1)
   set(NEAT_FAULT_CFG ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini)
 endif()
-# issue 40: files that are not ours, records rebuilt or refused, bounded reads, the lock (tests/tools/safety.sh)
+# OSMesa's own leaks (tests/render/lsan.supp) suppressed under the sanitizer build: every test that renders
+set(NEAT_RENDER_ENV "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/render/lsan.supp:print_suppressions=0")
+# issue 40: files that are not ours, records rebuilt or refused, bounded reads, the lock (tests/tools/safety.sh;
+# outputs and small render)
 if(NEAT_SANITIZE)
   set(NEAT_SAFETY_PLAN ${CMAKE_CURRENT_SOURCE_DIR}/tools/tiny-plan-asan.ini)
 else()
@@ -170,6 +173,7 @@ foreach(check rundir lock bounds records outputs paths edits counters small)
   add_test(NAME tools/safety_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety.sh $<TARGET_FILE:duel_evolve>
                    ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check} $<TARGET_FILE:fault_shim>)
+  set_tests_properties(tools/safety_${check} PROPERTIES ENVIRONMENT "${NEAT_RENDER_ENV}")
 endforeach()
 
 add_test(NAME tools/duel_run_faults
@@ -179,8 +183,7 @@ set_tests_properties(tools/duel_run_faults PROPERTIES TIMEOUT 600)
 
 # replays and rendering (OSMesa, libpng): pixels of known states and of a collision read back from the PNGs;
 # duel_evolve render / render-net from the outside (frames, same bytes twice, LCM logs, ffmpeg video, bad input)
-# OSMesa's own leaks (tests/render/lsan.supp) suppressed under the sanitizer build
-set(NEAT_RENDER_ENV "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/render/lsan.supp:print_suppressions=0")
+# OSMesa's own leaks (tests/render/lsan.supp) suppressed under the sanitizer build (NEAT_RENDER_ENV, above)
 neat_add_test(render test_render)
 target_link_libraries(test_render PRIVATE duelrender)
 set_tests_properties(render/test_render PROPERTIES ENVIRONMENT "${NEAT_RENDER_ENV}")
