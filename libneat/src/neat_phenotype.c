@@ -66,7 +66,8 @@ int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len
     int err = neat_phenotype_reserve(ph, len > 0 ? len : 1);
     if (err)
         return err;
-    memcpy(ph->blob, blob, len);
+    if (len > 0) /* an empty blob (NULL allowed) is refused by the loader, never copied from */
+        memcpy(ph->blob, blob, len);
     ph->blob_len = len;
     return neat_phenotype_load_own(ph);
 }
