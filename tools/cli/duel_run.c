@@ -23,6 +23,7 @@
 #include "duel_pairs.h"
 #include "duel_generations.h"
 #include "duel_outputs.h"
+#include "duel_plan.h"
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
 #include "duel_mpi.h"
@@ -1341,7 +1342,7 @@ static int duel_check_edits(const duel_config *config_ini, const neat_params *np
                             const char *dir, char **sets, uint32_t n_sets)
 {
     duel_config file = *config_ini, ck = *config_ini;
-    char *a = NULL, *b = NULL, err[600];
+    char *a = NULL, *b = NULL, err[600], la[300], lb[300];
     size_t alen = 0, blen = 0;
     FILE *fa, *fb;
     int r = 0;
@@ -1370,20 +1371,10 @@ static int duel_check_edits(const duel_config *config_ini, const neat_params *np
     if (fclose(fa) != 0 || fclose(fb) != 0) {
         fprintf(stderr, "duel_evolve: resume: out of memory\n");
         r = 1;
-    } else if (alen != blen || memcmp(a, b, alen) != 0) {
-        /* the first line that differs, both ways */
-        const char *pa = a, *pb = b;
-        while (*pa != '\0' && *pb != '\0') {
-            size_t la = strcspn(pa, "\n"), lb = strcspn(pb, "\n");
-            if (la != lb || memcmp(pa, pb, la) != 0) {
-                fprintf(stderr, "duel_evolve: %s/config.ini says '%.*s' but the run in its checkpoint has '%.*s': "
-                                "a hand edit of config.ini is not taken (give a change as --set KEY=VALUE, which is "
-                                "applied and logged, or restore config.ini)\n", dir, (int)la, pa, (int)lb, pb);
-                break;
-            }
-            pa += la + (pa[la] == '\n');
-            pb += lb + (pb[lb] == '\n');
-        }
+    } else if (duel_plan_diff(a, b, la, lb, sizeof la) != 0) {
+        fprintf(stderr, "duel_evolve: %s/config.ini says '%s' but the run in its checkpoint has '%s': a hand edit of "
+                        "config.ini is not taken (give a change as --set KEY=VALUE, which is applied and logged, or "
+                        "restore config.ini)\n", dir, la, lb);
         r = 2;
     }
     free(a);
