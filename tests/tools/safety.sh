@@ -114,6 +114,27 @@ records)
   "$duel" resume "$tmp/ref" --generations 5 --quiet
   cmp "$tmp/ref/dominance.csv" "$tmp/r/dominance.csv" || fail "a row dropped from dominance.csv not rebuilt"
   cmp "$tmp/ref/checkpoint.bin" "$tmp/r/checkpoint.bin" || fail "the repaired run went on differently"
+  # strength.csv rows are measured again from champions/gen-G.blob (the same bytes); a row whose champion is gone too
+  # is refused with what works
+  "$duel" run --config "$cfg" --out "$tmp/s" --generations 5 --set strength_every=2 --quiet
+  cp -r "$tmp/s" "$tmp/s2"
+  rm "$tmp/s2/strength.csv"
+  "$duel" resume "$tmp/s2" --quiet
+  cmp "$tmp/s/strength.csv" "$tmp/s2/strength.csv" || fail "a deleted strength.csv not rebuilt"
+  grep -q "resume: strength.csv rebuilt (3 rows measured again from champions/)" "$tmp/s2/log.txt" ||
+    fail "the strength rebuild not logged"
+  head -c -1 "$tmp/s/strength.csv" > "$tmp/s2/strength.csv" # generation 4's row cut
+  sed -i 2d "$tmp/s2/strength.csv"                           # generation 0's row lost
+  "$duel" resume "$tmp/s2" --quiet
+  cmp "$tmp/s/strength.csv" "$tmp/s2/strength.csv" || fail "a cut strength.csv not rebuilt"
+  sed -i 3d "$tmp/s2/strength.csv" # generation 2's row, and its champion
+  rm "$tmp/s2/champions/gen-00002.blob"
+  cp "$tmp/s2/strength.csv" "$tmp/cut.csv"
+  expect_bad "s2/strength.csv: generation 2's row is lost and cannot be measured again without champions/gen-00002.blob (No such file or directory): restore either, or resume with --set strength_every=0 to measure nothing more" \
+    resume "$tmp/s2"
+  cmp "$tmp/cut.csv" "$tmp/s2/strength.csv" || fail "a refused resume changed strength.csv"
+  "$duel" resume "$tmp/s2" --set strength_every=0 --generations 6 --quiet # the advice works
+  cmp "$tmp/cut.csv" "$tmp/s2/strength.csv" || fail "strength_every=0 measured"
   # generations.csv rows are measured as they happen: lost ones are refused, with advice that works
   cp -r "$tmp/ref" "$tmp/g"
   sed -i 4d "$tmp/g/generations.csv"

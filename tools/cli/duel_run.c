@@ -258,30 +258,59 @@ fail:
  * champion of generation g against every builtin strategy, 288 games each,
  * into strength.csv (the absolute strength a run reaches, which the
  * dominance ranking, relative to the run itself, does not show). */
-static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ)
+static const char *duel_s(uint32_t n);
+#define DUEL_STRENGTH_MAX_FILE (64u << 20) /* a 500-generation run measured every generation writes about 50 KB */
+
+static void duel_strength_header(char *row, size_t cap)
 {
-    char path[4200], row[600];
-    neat_phenotype ph;
+    size_t at = (size_t)snprintf(row, cap, "generation");
+    int k;
+    for (k = 0; k < DUEL_N_BUILTINS; k++) {
+        const char *n = duel_builtin_name(k);
+        at += (size_t)snprintf(row + at, cap - at, ",%s_wins,%s_losses,%s_draws,%s_timeouts", n, n, n, n);
+    }
+    snprintf(row + at, cap - at, "\n");
+}
+
+/* Generation g's row of strength.csv for the champion network blob: its games against every builtin. 0, or -1
+ * (the games could not be played). The same blob gives the same row, so a lost row is measured again. */
+static int duel_strength_row(duel_run *R, uint32_t g, const uint8_t *blob, size_t len, char *row, size_t cap)
+{
     duel_cli_ctrl a, b[DUEL_N_BUILTINS];
     duel_pair pairs[DUEL_N_BUILTINS];
-    struct stat st;
     size_t at;
-    int k, err;
-    if (R->cfg.strength_every == 0 || g % R->cfg.strength_every != 0)
-        return 0;
-    neat_phenotype_init(&ph, NULL);
-    err = neat_phenotype_load(&ph, champ, &R->cfg.neat);
+    int k;
     memset(&a, 0, sizeof a);
-    a.blob = ph.blob;
-    a.blob_len = ph.blob_len;
+    a.blob = (uint8_t *)blob;
+    a.blob_len = len;
     for (k = 0; k < DUEL_N_BUILTINS; k++) {
         memset(&b[k], 0, sizeof b[k]);
         b[k].ctrl.builtin = k;
         pairs[k].a = &a;
         pairs[k].b = &b[k];
     }
+    if (duel_pairs_play(&R->cfg.world, pairs, DUEL_N_BUILTINS, R->threads, NULL, NULL) != 0)
+        return -1;
+    at = (size_t)snprintf(row, cap, "%u", g);
+    for (k = 0; k < DUEL_N_BUILTINS; k++)
+        at += (size_t)snprintf(row + at, cap - at, ",%u,%u,%u,%u", pairs[k].tally.wins_a, pairs[k].tally.wins_b,
+                               pairs[k].tally.draws, pairs[k].tally.timeouts);
+    snprintf(row + at, cap - at, "\n");
+    return 0;
+}
+
+static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ)
+{
+    char path[4200], row[600];
+    neat_phenotype ph;
+    struct stat st;
+    int err;
+    if (R->cfg.strength_every == 0 || g % R->cfg.strength_every != 0)
+        return 0;
+    neat_phenotype_init(&ph, NULL);
+    err = neat_phenotype_load(&ph, champ, &R->cfg.neat);
     if (err == 0)
-        err = duel_pairs_play(&R->cfg.world, pairs, DUEL_N_BUILTINS, R->threads, NULL, NULL);
+        err = duel_strength_row(R, g, ph.blob, ph.blob_len, row, sizeof row);
     neat_phenotype_free(&ph);
     if (err) {
         fprintf(stderr, "duel_evolve: generation %u: the champion's strength could not be measured\n", g);
@@ -289,25 +318,112 @@ static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ)
     }
     duel_path(path, sizeof path, R->dir, "strength.csv");
     if (stat(path, &st) != 0 || st.st_size == 0) {
-        at = (size_t)snprintf(row, sizeof row, "generation");
-        for (k = 0; k < DUEL_N_BUILTINS; k++) {
-            const char *n = duel_builtin_name(k);
-            at += (size_t)snprintf(row + at, sizeof row - at, ",%s_wins,%s_losses,%s_draws,%s_timeouts", n, n, n, n);
-        }
-        snprintf(row + at, sizeof row - at, "\n");
-        if (duel_file_append(path, row) != 0)
+        char head[600];
+        duel_strength_header(head, sizeof head);
+        if (duel_file_append(path, head) != 0)
             goto fail;
     }
-    at = (size_t)snprintf(row, sizeof row, "%u", g);
-    for (k = 0; k < DUEL_N_BUILTINS; k++)
-        at += (size_t)snprintf(row + at, sizeof row - at, ",%u,%u,%u,%u", pairs[k].tally.wins_a, pairs[k].tally.wins_b,
-                               pairs[k].tally.draws, pairs[k].tally.timeouts);
-    snprintf(row + at, sizeof row - at, "\n");
     if (duel_file_append(path, row) == 0)
         return 0;
 fail:
     fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
     return -1;
+}
+
+/* strength.csv must hold a row for every measured generation before g (0, K, 2K, ...): a lost row (a deleted or
+ * truncated file, a partial last line) is measured again from champions/gen-G.blob, which gives the same bytes;
+ * one whose champion is gone too is refused with what works. Rows after g were cut already. 0, or the exit status
+ * after one line. */
+static int duel_rebuild_strength(duel_run *R, uint32_t g)
+{
+    char path[4200], head[600], row[600], name[64];
+    uint8_t *have = NULL, *blob;
+    size_t have_len = 0, len, blen, pos;
+    char *text = NULL;
+    FILE *mem;
+    uint32_t every = R->cfg.strength_every, q, measured = 0;
+    int r;
+    if (every == 0 || g == 0)
+        return 0;
+    duel_path(path, sizeof path, R->dir, "strength.csv");
+    r = duel_file_read(path, DUEL_STRENGTH_MAX_FILE, &have, &have_len);
+    if (r != 0 && errno != ENOENT) {
+        fprintf(stderr, "duel_evolve: %s: %s: refusing to replace it\n", path, duel_file_strerror(errno));
+        return 2;
+    }
+    duel_strength_header(head, sizeof head);
+    if ((mem = open_memstream(&text, &len)) == NULL) {
+        free(have);
+        fprintf(stderr, "duel_evolve: resume: out of memory\n");
+        return 1;
+    }
+    fputs(head, mem);
+    for (q = 0; q < g; q += every) {
+        /* this generation's whole line in the file as it is, else measured again */
+        const char *found = NULL;
+        size_t found_len = 0;
+        for (pos = 0; have != NULL && pos < have_len;) {
+            const uint8_t *nl = memchr(have + pos, '\n', have_len - pos);
+            size_t n = nl == NULL ? have_len - pos : (size_t)(nl - (have + pos));
+            int w = snprintf(name, sizeof name, "%u,", q);
+            if (nl != NULL && n > (size_t)w && memcmp(have + pos, name, (size_t)w) == 0) {
+                found = (const char *)have + pos;
+                found_len = n + 1;
+            }
+            pos += n + 1;
+        }
+        if (found != NULL) {
+            fwrite(found, 1, found_len, mem);
+            continue;
+        }
+        snprintf(name, sizeof name, "champions/gen-%05u.blob", q);
+        {
+            char bpath[4200];
+            duel_path(bpath, sizeof bpath, R->dir, name);
+            if (duel_file_read(bpath, DUEL_GENOME_MAX, &blob, &blen) != 0) {
+                fprintf(stderr, "duel_evolve: %s: generation %u's row is lost and cannot be measured again without "
+                                "%s (%s): restore either, or resume with --set strength_every=0 to measure "
+                                "nothing more\n",
+                        path, q, name, duel_file_strerror(errno));
+                fclose(mem);
+                free(text);
+                free(have);
+                return 2;
+            }
+        }
+        r = duel_strength_row(R, q, blob, blen, row, sizeof row);
+        free(blob);
+        if (r != 0) {
+            fprintf(stderr, "duel_evolve: %s: generation %u's row could not be measured again from %s\n", path, q,
+                    name);
+            fclose(mem);
+            free(text);
+            free(have);
+            return 1;
+        }
+        fputs(row, mem);
+        measured++;
+    }
+    if (fclose(mem) != 0) {
+        free(text);
+        free(have);
+        fprintf(stderr, "duel_evolve: resume: out of memory\n");
+        return 1;
+    }
+    if (have != NULL && have_len == len && memcmp(have, text, len) == 0) {
+        free(have);
+        free(text);
+        return 0;
+    }
+    free(have);
+    r = duel_file_replace(path, text, len) != 0;
+    if (r)
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
+    else
+        duel_log(R, "resume: strength.csv rebuilt (%u row%s measured again from champions/)", measured,
+                 duel_s(measured));
+    free(text);
+    return r;
 }
 
 /* Opponent k's name in generations.csv's columns: its builtin's, or o1, o2, ... */
@@ -1578,6 +1694,10 @@ static int duel_resume_main(int argc, char **argv)
         return 1;
     }
     if (R.coev != NULL && (k = duel_rebuild_dominance(&R)) != 0) {
+        duel_run_free(&R);
+        return k;
+    }
+    if ((k = duel_rebuild_strength(&R, g)) != 0) {
         duel_run_free(&R);
         return k;
     }
