@@ -320,6 +320,12 @@ edits)
   expect_bad "configs/complexify.ini says 'generations = 2' but plan.ini makes 'generations = 3' (line 3): the plan of an experiment cannot change" \
     experiment resume "$tmp/x"
   cp "$tmp/plan.keep" "$tmp/x/plan.ini"
+  # a changed preset name (its report would name a preset the runs were not made from)
+  sed -i 's/^preset = fixed-5/preset = fixed-10/' "$tmp/x/plan.ini"
+  expect_bad "plan.ini says preset = fixed-10 but .*x/configs/fixed-5.ini was made from preset fixed-5: the plan of an experiment cannot change" \
+    experiment resume "$tmp/x"
+  cp "$tmp/plan.keep" "$tmp/x/plan.ini"
+  "$duel" experiment resume "$tmp/x" --quiet > /dev/null # restored: taken again
   sed -i 's/^weight_mut_prob = .*/weight_mut_prob = 0.5/' "$tmp/x/configs/fixed-5.ini"
   expect_bad "runs/fixed-5-[12]/config.ini belongs to another plan" experiment resume "$tmp/x"
   ;;

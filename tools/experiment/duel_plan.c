@@ -250,6 +250,32 @@ static int duel_plan_agrees(const duel_plan *p, const duel_plan_method *m, const
     return 0;
 }
 
+/* configs/NAME.ini's first line names the preset it was made from (a directory made before the mark has none:
+ * nothing to check); plan.ini's preset = must name the same. 0, or -1 with err. */
+static int duel_plan_same_preset(const duel_plan_method *m, const char *path, char *err, size_t err_len)
+{
+    uint8_t *text;
+    size_t len, mark = strlen(DUEL_PLAN_PRESET_MARK), n;
+    if (duel_file_read(path, 1u << 20, &text, &len) != 0)
+        return 0; /* duel_config_read has read it already: a file gone since is found by the runs */
+    if (len < mark || memcmp(text, DUEL_PLAN_PRESET_MARK, mark) != 0) {
+        free(text);
+        return 0;
+    }
+    for (n = mark; n < len && text[n] != '\n'; n++)
+        ;
+    if (n - mark != strlen(m->preset) || memcmp(text + mark, m->preset, n - mark) != 0) {
+        snprintf(err, err_len, "plan.ini says preset = %s but %s was made from preset %.*s: the plan of an "
+                               "experiment cannot change once it started (restore plan.ini; a changed plan is a new "
+                               "experiment directory)",
+                 m->preset, path, (int)(n - mark > 64 ? 64 : n - mark), (const char *)text + mark);
+        free(text);
+        return -1;
+    }
+    free(text);
+    return 0;
+}
+
 /* Every method's configuration: its preset (or, from_dir, DIR/configs/NAME.ini), [all runs], its keys. */
 static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *err, size_t err_len)
 {
@@ -295,7 +321,8 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
             snprintf(err, err_len, "out of memory");
             return -1;
         }
-        if (from_dir && duel_plan_agrees(p, m, path, err, err_len) != 0)
+        if (from_dir && (duel_plan_same_preset(m, path, err, err_len) != 0 ||
+                         duel_plan_agrees(p, m, path, err, err_len) != 0))
             return -1;
     }
     return 0;
@@ -508,8 +535,22 @@ int duel_plan_save(const duel_plan *p, const char *dir)
         return -1;
     }
     for (i = 0; i < p->n_methods; i++) {
+        char *cfg = NULL;
+        size_t cfg_len = 0;
+        FILE *mem = open_memstream(&cfg, &cfg_len);
+        int w;
+        if (mem != NULL) {
+            /* the preset it was made from, so that an edit of plan.ini's preset = is seen (duel_plan_same_preset) */
+            fprintf(mem, "%s%s\n%s", DUEL_PLAN_PRESET_MARK, p->m[i].preset, p->m[i].cfg_text);
+            if (fclose(mem) != 0) {
+                free(cfg);
+                cfg = NULL;
+            }
+        }
         snprintf(path, sizeof path, "%s/configs/%s.ini", dir, p->m[i].name);
-        if (duel_file_replace(path, p->m[i].cfg_text, strlen(p->m[i].cfg_text)) != 0) {
+        w = cfg == NULL ? -1 : duel_file_replace(path, cfg, cfg_len);
+        free(cfg);
+        if (w != 0) {
             fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", path, strerror(errno));
             free(text);
             return -1;

@@ -11,6 +11,8 @@
 
 #define DUEL_PLAN_MAX_METHODS 32
 #define DUEL_PLAN_MAX_SETS 32     /* overrides in one section */
+/* The first line of an experiment directory's configs/NAME.ini: the preset it was made from. */
+#define DUEL_PLAN_PRESET_MARK "; made from preset "
 #define DUEL_PLAN_MAX_NAME 48     /* a method's name: letters, digits, '-' and '_' */
 #define DUEL_PLAN_MAX_RUNS 1000   /* runs of one method */
 #define DUEL_PLAN_SET_LEN 1002    /* "key=value" of one INI line */
