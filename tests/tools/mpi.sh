@@ -141,6 +141,21 @@ faults)
     f.err || fail "no line names the frozen rank: $(cat f.err)"
   "$duel" resume F --quiet
   same_run ref F
+  # a frozen rank 0: the others wait for its next chunk with no work in flight; its signs of life stop, and after
+  # the deadline's base a waiting rank ends the job with a line naming it
+  "${mpi[@]}" -np 3 -x DUEL_MPI_WAIT=2 "$duel" run --config "$cfg" --out Z --generations 40 --quiet 2> z.err & job=$!
+  wait_gens Z $job 3
+  frozen=$(rank_pid 0 "run --config $cfg --out Z")
+  kill -STOP "$frozen"
+  start=$SECONDS rc=0
+  wait $job || rc=$?
+  kill -9 "$frozen" 2>/dev/null || true
+  [ "$rc" -ne 0 ] || fail "the job went on without the frozen rank 0"
+  [ $((SECONDS - start)) -lt 60 ] || fail "the job took $((SECONDS - start)) s to end"
+  grep -q "mpi: rank 0 (on .*) has given no sign of life for [0-9]* s (at most 2 s allowed) while rank [12] waits for a message from it: it is frozen" \
+    z.err || fail "no line names the frozen rank 0: $(cat z.err)"
+  "$duel" resume Z --quiet
+  same_run ref Z
   # Ctrl-C to mpirun: rank 0 finishes the generation, saves it and releases the others
   "${mpi[@]}" -np 3 "$duel" run --config "$cfg" --out I --generations 40 2> i.err & job=$!
   wait_gens I $job 2
@@ -158,6 +173,22 @@ faults)
   sleep 0.3 # rank 0's child (its own slot) dies with it
   "${mpi[@]}" -np 2 "$duel" experiment resume EK --quiet
   diff <(snapshot E1) <(snapshot EK) > snap.diff || fail "continued experiment: other files: $(head -5 snap.diff)"
+  # an experiment with a rank frozen while it plays a whole run (no deadline from the run's work): rank 0 watches
+  # its signs of life, ends the job after the deadline's base, and the experiment continues to the same files
+  "${mpi[@]}" -np 3 -x DUEL_MPI_WAIT=2 "$duel" experiment plan-one.ini --out EZ --quiet 2> ez.err & job=$!
+  wait_gens EZ/runs/complexify-2 $job 2
+  frozen=$(rank_pid 1 "experiment plan-one.ini --out EZ")
+  kill -STOP "$frozen"
+  start=$SECONDS rc=0
+  wait $job || rc=$?
+  kill -9 "$frozen" 2>/dev/null || true
+  [ "$rc" -ne 0 ] || fail "the experiment went on without the frozen rank"
+  [ $((SECONDS - start)) -lt 60 ] || fail "the experiment took $((SECONDS - start)) s to end"
+  grep -q "mpi: rank 1 (on .*) has given no sign of life for [0-9]* s (at most 2 s allowed) while rank 0 waits for the task it executes" \
+    ez.err || fail "no line names the frozen rank: $(cat ez.err)"
+  sleep 0.3 # rank 0's child (its own slot) dies with it
+  "${mpi[@]}" -np 2 "$duel" experiment resume EZ --quiet
+  diff <(snapshot E1) <(snapshot EZ) > snap.diff || fail "continued experiment (frozen rank): other files: $(head -5 snap.diff)"
   echo "faults: ok"
   ;;
 bad)

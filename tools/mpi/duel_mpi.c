@@ -125,7 +125,7 @@ int duel_mpi_start(int argc, char **argv)
     int provided = 0, local = 1, r, bad = -1;
     if (!duel_mpi_launched())
         return 0;
-    if (MPI_Init_thread(NULL, NULL, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
+    if (MPI_Init_thread(NULL, NULL, MPI_THREAD_MULTIPLE, &provided) != MPI_SUCCESS) {
         fprintf(stderr, "duel_evolve: mpi: MPI_Init failed\n");
         return 1;
     }
@@ -140,6 +140,7 @@ int duel_mpi_start(int argc, char **argv)
     memset(&me, 0, sizeof me);
     me.version = duel_mpi_version_word();
     me.local = (uint32_t)local;
+    me.beats = provided >= MPI_THREAD_MULTIPLE;
     if (gethostname(me.host, sizeof me.host - 1) != 0)
         strcpy(me.host, "?");
     all = (duel_mpi_peer *)calloc((size_t)duel_mpi_g.size, sizeof *all);
@@ -173,6 +174,12 @@ int duel_mpi_start(int argc, char **argv)
                             "the ranks could not play on threads\n");
         return 2;
     }
+    if (duel_mpi_alive_start(provided) != 0) {
+        fprintf(stderr, "duel_evolve: mpi: rank %d cannot start its signs of life: out of memory or threads\n",
+                duel_mpi_g.rank);
+        MPI_Abort(MPI_COMM_WORLD, 1);
+        return 1;
+    }
     return 0;
 }
 
@@ -186,23 +193,44 @@ void duel_mpi_nap(long usec)
 
 int duel_mpi_recv(MPI_Comm comm, int src, int tag, uint8_t **buf, size_t *len, MPI_Status *st)
 {
-    long nap = 5;
-    int flag = 0, count = 0;
+    long nap = 5, napped = 0;
+    int flag = 0, count = 0, world_src = src;
     MPI_Status s;
+    MPI_Message msg;
+    if (src != MPI_ANY_SOURCE && comm != MPI_COMM_WORLD) {
+        /* whose signs of life to watch: src's rank in the world */
+        MPI_Group g, w;
+        MPI_Comm_group(comm, &g);
+        MPI_Comm_group(MPI_COMM_WORLD, &w);
+        MPI_Group_translate_ranks(g, 1, &src, w, &world_src);
+        MPI_Group_free(&g);
+        MPI_Group_free(&w);
+    }
     for (;;) {
-        if (MPI_Iprobe(src, tag, comm, &flag, &s) != MPI_SUCCESS)
+        /* a matched probe: the signs-of-life thread takes messages from this communicator too */
+        if (MPI_Improbe(src, tag, comm, &flag, &msg, &s) != MPI_SUCCESS)
             return -1;
+        if (flag && comm == MPI_COMM_WORLD && s.MPI_TAG == DUEL_TAG_ALIVE && tag != DUEL_TAG_ALIVE) {
+            MPI_Mrecv(NULL, 0, MPI_BYTE, &msg, MPI_STATUS_IGNORE);
+            duel_mpi_alive_heard(s.MPI_SOURCE);
+            continue;
+        }
         if (flag)
             break;
         duel_mpi_nap(nap);
+        napped += nap;
         if (nap < 1000)
             nap *= 2; /* 5 us at first (a reply on its way), at most 1 ms (rank 0 between generations) */
+        if (napped >= 1000000L && world_src != MPI_ANY_SOURCE) {
+            napped = 0;
+            duel_mpi_alive_check(world_src, "a message from it");
+        }
     }
     MPI_Get_count(&s, MPI_BYTE, &count);
     *buf = (uint8_t *)malloc(count > 0 ? (size_t)count : 1u);
     if (*buf == NULL)
         return -1;
-    if (MPI_Recv(*buf, count, MPI_BYTE, s.MPI_SOURCE, s.MPI_TAG, comm, st) != MPI_SUCCESS) {
+    if (MPI_Mrecv(*buf, count, MPI_BYTE, &msg, st) != MPI_SUCCESS) {
         free(*buf);
         *buf = NULL;
         return -1;
@@ -252,6 +280,7 @@ int duel_mpi_finish(int rc)
 {
     if (!duel_mpi_g.active)
         return rc;
+    duel_mpi_alive_stop();
     if (duel_mpi_g.rank == 0 && !duel_mpi_g.quiet_end) {
         int r;
         int32_t st = rc;

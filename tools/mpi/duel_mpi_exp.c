@@ -37,6 +37,7 @@ static int duel_exp_gsize = 1;    /* ranks a group (the last one takes the ranks
 static int duel_exp_local = 0;    /* 1: slot 0 is a child process of rank 0 */
 static pid_t duel_exp_child = 0;  /* slot 0's child while it runs */
 static int *duel_exp_leader = NULL; /* [slots] the world rank of each remote slot's leader (index 0 unused when local) */
+static unsigned char *duel_exp_busy = NULL; /* [slots] 1: the slot's leader executes a task */
 
 /* ---- ranks 1..N-1 */
 
@@ -98,6 +99,20 @@ int duel_mpi_exp_serve(uint32_t threads, duel_mpi_command_fn cmd)
     MPI_Comm_rank(group, &grank);
     MPI_Comm_size(group, &gsize);
     duel_mpi_g.games_comm = group;
+    {
+        /* a member waits on its leader, the leader on its members: signs of life between them */
+        MPI_Group g, w;
+        int k, wr;
+        MPI_Comm_group(group, &g);
+        MPI_Comm_group(MPI_COMM_WORLD, &w);
+        for (k = 0; k < gsize; k++)
+            if (grank == 0 || k == 0) {
+                MPI_Group_translate_ranks(g, 1, &k, w, &wr);
+                duel_mpi_alive_link(wr);
+            }
+        MPI_Group_free(&g);
+        MPI_Group_free(&w);
+    }
     if (grank != 0) {
         /* a member: the leader's games until its END, then rank 0's END to everybody */
         int rc = duel_mpi_games_serve(group, 0, threads, &status);
@@ -152,8 +167,10 @@ uint32_t duel_mpi_exp_open(uint32_t runs_left)
         duel_mpi_send(MPI_COMM_WORLD, r, DUEL_TAG_SETUP, &su, sizeof su);
     MPI_Comm_split(MPI_COMM_WORLD, MPI_UNDEFINED, 0, &none);
     free(duel_exp_leader);
+    free(duel_exp_busy);
     duel_exp_leader = (int *)calloc((size_t)duel_exp_groups + 1u, sizeof *duel_exp_leader);
-    if (duel_exp_leader == NULL)
+    duel_exp_busy = (unsigned char *)calloc((size_t)duel_exp_groups + 1u, 1);
+    if (duel_exp_leader == NULL || duel_exp_busy == NULL)
         return 0;
     for (k = 0; k < duel_exp_groups; k++)
         duel_exp_leader[duel_exp_local + k] = 1 + k * (int)su.group_size;
@@ -208,6 +225,8 @@ int duel_mpi_exp_start(uint32_t slot, int argc, char **argv)
     }
     rc = duel_mpi_send(MPI_COMM_WORLD, duel_exp_leader[slot], DUEL_TAG_TASK, buf, len);
     free(buf);
+    if (rc == 0)
+        duel_exp_busy[slot] = 1;
     return rc;
 }
 
@@ -231,10 +250,18 @@ int duel_mpi_exp_poll(uint32_t *slot, int *status)
         MPI_Recv(&rc, (int)sizeof rc, MPI_BYTE, st.MPI_SOURCE, DUEL_TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         for (k = duel_exp_local; k < duel_exp_local + duel_exp_groups; k++)
             if (duel_exp_leader[k] == st.MPI_SOURCE) {
+                duel_exp_busy[k] = 0;
                 *slot = (uint32_t)k;
                 *status = rc;
                 return 1;
             }
+    }
+    {
+        /* a task has no deadline of its own (a whole run takes hours): its leader's signs of life are watched */
+        int k;
+        for (k = duel_exp_local; k < duel_exp_local + duel_exp_groups; k++)
+            if (duel_exp_busy[k])
+                duel_mpi_alive_check(duel_exp_leader[k], "the task it executes (a run, compare or ladder)");
     }
     return 0;
 }

@@ -153,15 +153,8 @@ static double duel_disp_now(void)
  * comes near (the slowest, two 256-node networks for 750 steps, takes well under 0.1 s). docs/cluster.md. */
 static double duel_disp_deadline(const duel_peer *pe)
 {
-    static double base = -1.0;
     size_t games = pe->slot[0].count + (pe->slot[1].busy ? pe->slot[1].count : 0);
-    if (base < 0.0) {
-        const char *v = getenv("DUEL_MPI_WAIT");
-        char *end;
-        double b = v != NULL ? strtod(v, &end) : 0.0;
-        base = v != NULL && end != v && *end == '\0' && b > 0.0 && b <= 1e6 ? b : 60.0;
-    }
-    return base + 0.25 * (double)games;
+    return duel_mpi_wait_base() + 0.25 * (double)games;
 }
 
 /* Ends the job when a rank has held a chunk past its deadline: one line naming it, then MPI_Abort (MPI_Finalize

@@ -18,7 +18,8 @@ enum {
     DUEL_TAG_SETUP = 4,  /* 0 -> rank: the experiment's groups (duel_mpi_exp.c) */
     DUEL_TAG_TASK = 5,   /* 0 -> group leader: a duel_evolve command line to execute */
     DUEL_TAG_DONE = 6,   /* group leader -> 0: its exit status */
-    DUEL_TAG_INT = 7     /* 0 -> group leader: stop the task after the generation in flight */
+    DUEL_TAG_INT = 7,    /* 0 -> group leader: stop the task after the generation in flight */
+    DUEL_TAG_ALIVE = 8   /* any -> the ranks that may wait on it: a sign of life, empty (duel_mpi_alive.c) */
 };
 
 /* The messages and bytes of a run's games this process sent and received (log.txt's mpi: line). */
@@ -31,6 +32,8 @@ typedef struct duel_mpi_peer {
     uint64_t version;   /* duel_mpi_version_word() */
     uint32_t threads;   /* the threads it plays with */
     uint32_t local;     /* ranks on its machine */
+    uint32_t beats;     /* 1: it sends signs of life (its MPI gives MPI_THREAD_MULTIPLE) */
+    uint32_t pad;
     char host[64];
 } duel_mpi_peer;
 
@@ -59,6 +62,20 @@ void duel_mpi_nap(long usec);
 
 /* Ranks 1..N-1 of a run: its games, from the leader of comm, until END; the exit status rank 0 sent. */
 int duel_mpi_games_serve(MPI_Comm comm, int leader, uint32_t threads, int *end_status);
+
+/* Signs of life (duel_mpi_alive.c). The deadline's base: 60 s, or DUEL_MPI_WAIT seconds from the environment. */
+double duel_mpi_wait_base(void);
+/* Starts the thread that sends signs of life (when provided is MPI_THREAD_MULTIPLE). 0, or -1. */
+int duel_mpi_alive_start(int provided);
+/* Sends signs of life to world_rank too (a rank of this one's experiment group). */
+void duel_mpi_alive_link(int world_rank);
+/* A sign of life from world_rank taken by another receiver. */
+void duel_mpi_alive_heard(int world_rank);
+/* Ends the job (one line, MPI_Abort) when world_rank, which this rank waits on for waiting_for, has been silent
+ * longer than the deadline's base. */
+void duel_mpi_alive_check(int world_rank, const char *waiting_for);
+/* Stops the thread (before the job's END and MPI_Finalize). */
+void duel_mpi_alive_stop(void);
 
 /* The experiment's side of duel_mpi_serve (ranks 1..N-1). */
 typedef int (*duel_mpi_command_fn)(int argc, char **argv);
