@@ -53,6 +53,12 @@ static const neat_cfg_key neat_keys[] = {
 };
 #define NEAT_N_KEYS (sizeof neat_keys / sizeof neat_keys[0])
 
+const neat_cfg_key *neat_config_keys(size_t *n)
+{
+    *n = NEAT_N_KEYS;
+    return neat_keys;
+}
+
 static size_t neat_edit_distance(const char *a, const char *b)
 {
     size_t la = strlen(a), lb = strlen(b), i, j, row[64], prev, tmp;

@@ -30,6 +30,9 @@ typedef struct neat_cfg_key {
     const char *const *names; /* NEAT_CFG_ENUM: the value names, index = stored int */
 } neat_cfg_key;
 
+/* The table of every [neat] key (*n entries), in the order neat_config_dump writes them. */
+const neat_cfg_key *neat_config_keys(size_t *n);
+
 /* Parses value into the field of base described by k; -1 with err on a bad value. */
 int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value, char *err, size_t err_len);
 /* Sets key from a table; -1 with a "did you mean" in err if unknown. */

@@ -1,0 +1,62 @@
+"""neat_duel: NEAT and competitive coevolution (Stanley & Miikkulainen 2004) in C, for Python.
+
+The C libraries do the work (libneat, the fixed-point runtime a microcontroller runs, the robot duel); this
+package binds them. docs/python.md is the guide::
+
+    import neat_duel as nd
+
+    params = nd.Params(pop_size=150, n_inputs=2, n_outputs=1, allow_recurrent=False)
+    pop = nd.Population(params, seed=1)
+    records = pop.run(fitness, generations=100)   # fitness(genome) -> float
+"""
+from __future__ import annotations
+
+from . import errors
+from ._core import (
+    Q15_ONE,
+    VERSION,
+    Genome,
+    Network,
+    Networks,
+    Params,
+    Population,
+    from_q15,
+    q15,
+    seed_derive,
+)
+from .errors import (
+    ArgumentError,
+    CountersError,
+    FitnessError,
+    FormatError,
+    NeatError,
+    OutOfMemoryError,
+    ParamError,
+    StateError,
+    TooBigError,
+)
+
+__version__ = VERSION
+
+__all__ = [
+    "Q15_ONE",
+    "VERSION",
+    "Genome",
+    "Network",
+    "Networks",
+    "Params",
+    "Population",
+    "from_q15",
+    "q15",
+    "seed_derive",
+    "errors",
+    "ArgumentError",
+    "CountersError",
+    "FitnessError",
+    "FormatError",
+    "NeatError",
+    "OutOfMemoryError",
+    "ParamError",
+    "StateError",
+    "TooBigError",
+]

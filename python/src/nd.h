@@ -1,0 +1,82 @@
+// nd.h - what the binding's files share: the C headers, the C error codes raised as neat_duel.errors exceptions, the
+// genome and network objects.
+#pragma once
+
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "neat.h"
+#include "neat_phenotype.h"
+#include "nrt.h"
+extern "C" {
+#include "neat_config.h"
+#include "neat_ini.h"
+}
+
+namespace nb = nanobind;
+
+// A C error on its way to Python: neat_duel.errors picks the class from the code (nd_errors.cpp).
+struct nd_error : std::exception {
+    int code;          // a neat_error, or an nrt_error - 100
+    std::string msg;   // the whole message, file and offset included
+    std::string path;  // the file, if any
+    long long offset;  // the byte offset of the problem in it, or -1
+    long long index;   // the genome whose fitness was refused, or -1
+    nd_error(int c, std::string m, std::string p = "", long long off = -1, long long idx = -1)
+        : code(c), msg(std::move(m)), path(std::move(p)), offset(off), index(idx)
+    {
+    }
+    const char *what() const noexcept override { return msg.c_str(); }
+};
+
+// The text of a libneat code (or an nrt code - 100).
+std::string nd_strerror(int code);
+// Raises code with "what: the C library's text".
+[[noreturn]] void nd_fail(int code, const std::string &what);
+
+// A genome of its own (a copy: what the population does next never changes it), with the shape and step mode its
+// network is built with.
+struct nd_genome {
+    neat_genome g;
+    uint32_t n_inputs = 0, n_outputs = 0;
+    int net_step = NEAT_STEP_SYNC;
+    nd_genome() { neat_genome_init(&g); }
+    nd_genome(const nd_genome &) = delete;
+    nd_genome &operator=(const nd_genome &) = delete;
+    ~nd_genome() { neat_genome_free(&g, nullptr); }
+};
+
+// A network in the runtime (what a microcontroller runs), with its input and output buffers.
+struct nd_network {
+    neat_phenotype ph;
+    std::vector<nrt_q15> in, out;
+    nd_network() { neat_phenotype_init(&ph, nullptr); }
+    nd_network(const nd_network &) = delete;
+    nd_network &operator=(const nd_network &) = delete;
+    ~nd_network() { neat_phenotype_free(&ph); }
+    void sized(); // in and out sized to the loaded network
+};
+
+// A copy of g (shape and step mode from p) as a Python-owned nd_genome.
+nd_genome *nd_genome_copy(const neat_genome *g, const neat_params &p);
+// g's network, loaded (encoded exactly as evolution evaluates it).
+nd_network *nd_network_of(const nd_genome &g);
+// Writes bytes to path through a temporary file and a rename (never a half-written file); raises OSError.
+void nd_write_file(const std::string &path, const uint8_t *bytes, size_t len);
+// The whole regular file at path, at most cap bytes; raises OSError (or a format error for a larger file).
+std::vector<uint8_t> nd_read_file(const std::string &path, size_t cap);
+
+void nd_bind_errors(nb::module_ &m);
+void nd_bind_params(nb::module_ &m);
+void nd_bind_genome(nb::module_ &m);
+void nd_bind_network(nb::module_ &m);
+void nd_bind_population(nb::module_ &m);
+
+// The parameters object bound as neat_duel.Params.
+struct nd_params {
+    neat_params p = neat_params_default();
+};

@@ -1,0 +1,52 @@
+// nd_errors.cpp - C error codes as Python exceptions (neat_duel.errors), with the C message, file, offset and index.
+#include <nanobind/stl/string.h>
+
+#include "nd.h"
+
+std::string nd_strerror(int code)
+{
+    if (code <= -100)
+        return nrt_strerror(code + 100);
+    return neat_strerror(code);
+}
+
+void nd_fail(int code, const std::string &what)
+{
+    throw nd_error(code, what + ": " + nd_strerror(code));
+}
+
+// The class of neat_duel.errors for a code (docs/python.md, "Errors").
+static const char *nd_error_class(int code)
+{
+    switch (code) {
+    case NEAT_E_ARG: return "ArgumentError";
+    case NEAT_E_NOMEM: return "OutOfMemoryError";
+    case NEAT_E_PARAM: return "ParamError";
+    case NEAT_E_FITNESS: return "FitnessError";
+    case NEAT_E_TOOBIG: return "TooBigError";
+    case NEAT_E_FORMAT:
+    case NEAT_E_CRC:
+    case NEAT_E_TRUNCATED: return "FormatError";
+    case NEAT_E_STATE: return "StateError";
+    case NEAT_E_COUNTERS: return "CountersError";
+    default: return code <= -100 ? "FormatError" : "NeatError";
+    }
+}
+
+void nd_bind_errors(nb::module_ &m)
+{
+    (void)m;
+    nb::register_exception_translator([](const std::exception_ptr &p, void *) {
+        try {
+            std::rethrow_exception(p);
+        } catch (const nd_error &e) {
+            nb::object errors = nb::module_::import_("neat_duel.errors");
+            nb::object cls = errors.attr(nd_error_class(e.code));
+            nb::object path = e.path.empty() ? nb::none() : nb::cast(e.path);
+            nb::object offset = e.offset < 0 ? nb::none() : nb::cast(e.offset);
+            nb::object index = e.index < 0 ? nb::none() : nb::cast(e.index);
+            nb::object exc = cls(e.msg, e.code, path, offset, index);
+            PyErr_SetObject(cls.ptr(), exc.ptr());
+        }
+    });
+}

@@ -1,0 +1,102 @@
+// nd_files.cpp - the package's file reads and writes: bounded reads of regular files, writes through a temporary
+// file, fsync and rename, so that an interrupted save never leaves half a file in place of a whole one.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "nd.h"
+
+[[noreturn]] static void nd_os_error(const std::string &path, const char *what)
+{
+    int e = errno;
+    // OSError(errno, strerror, filename): Python picks FileNotFoundError, IsADirectoryError, ... from errno
+    PyErr_SetObject(PyExc_OSError, nb::make_tuple(e, std::string(what) + ": " + std::strerror(e), path).ptr());
+    throw nb::python_error();
+}
+
+void nd_write_file(const std::string &path, const uint8_t *bytes, size_t len)
+{
+    // a name of its own beside path (mkstemp): no file of the user's is touched but path itself
+    std::vector<char> name(path.begin(), path.end());
+    static const char suffix[] = ".tmp-XXXXXX";
+    name.insert(name.end(), suffix, suffix + sizeof suffix);
+    int fd = mkstemp(name.data());
+    std::string tmp(name.data());
+    if (fd < 0)
+        nd_os_error(path, "cannot create a temporary file beside it");
+    fchmod(fd, 0644);
+    size_t done = 0;
+    bool ok = true;
+    {
+        nb::gil_scoped_release nogil;
+        while (ok && done < len) {
+            ssize_t w = write(fd, bytes + done, len - done);
+            if (w < 0 && errno == EINTR)
+                continue;
+            ok = w > 0;
+            if (ok)
+                done += (size_t)w;
+        }
+        ok = ok && fsync(fd) == 0;
+    }
+    int e = errno;
+    if (close(fd) != 0 && ok) {
+        ok = false;
+        e = errno;
+    }
+    if (!ok || rename(tmp.c_str(), path.c_str()) != 0) {
+        if (ok)
+            e = errno;
+        unlink(tmp.c_str());
+        errno = e;
+        nd_os_error(path, "cannot write");
+    }
+}
+
+std::vector<uint8_t> nd_read_file(const std::string &path, size_t cap)
+{
+    int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0)
+        nd_os_error(path, "cannot open");
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        int e = errno;
+        close(fd);
+        errno = e;
+        nd_os_error(path, "cannot read");
+    }
+    if (!S_ISREG(st.st_mode)) {
+        close(fd);
+        throw nd_error(NEAT_E_FORMAT, path + ": not a regular file", path);
+    }
+    if ((unsigned long long)st.st_size > cap) {
+        close(fd);
+        throw nd_error(NEAT_E_FORMAT,
+                       path + ": " + std::to_string((long long)st.st_size) + " bytes, more than the " +
+                           std::to_string((unsigned long long)cap) + " this kind of file may have",
+                       path);
+    }
+    std::vector<uint8_t> buf((size_t)st.st_size);
+    size_t done = 0;
+    while (done < buf.size()) {
+        ssize_t r = read(fd, buf.data() + done, buf.size() - done);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r < 0) {
+            int e = errno;
+            close(fd);
+            errno = e;
+            nd_os_error(path, "cannot read");
+        }
+        if (r == 0)
+            break; // it shrank meanwhile: what is there
+        done += (size_t)r;
+    }
+    buf.resize(done);
+    close(fd);
+    return buf;
+}

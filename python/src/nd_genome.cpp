@@ -1,0 +1,183 @@
+// nd_genome.cpp - neat_duel.Genome: one genome's genes as numpy arrays (views, not copies), its network, its file
+// (the genome file format of docs/formats.md) and its Graphviz picture.
+#include <cstdlib>
+#include <cstring>
+
+#include <nanobind/stl/string.h>
+
+#include "nd.h"
+
+// numpy's structured dtypes of the C structs (neat_node, neat_conn), built once by neat_duel._dtypes from these
+static_assert(sizeof(neat_node) == 8 && offsetof(neat_node, type) == 4, "neat_node layout");
+static_assert(sizeof(neat_conn) == 24 && offsetof(neat_conn, weight) == 8 && offsetof(neat_conn, innov) == 16 &&
+                  offsetof(neat_conn, enabled) == 20,
+              "neat_conn layout");
+
+#define ND_GENOME_MAX (64u << 20) // a genome file of 256 nodes and every connection is far smaller
+
+nd_genome *nd_genome_copy(const neat_genome *g, const neat_params &p)
+{
+    nd_genome *r = new nd_genome();
+    int err = neat_genome_copy(&r->g, g, nullptr);
+    if (err) {
+        delete r;
+        nd_fail(err, "copying a genome");
+    }
+    r->n_inputs = p.n_inputs;
+    r->n_outputs = p.n_outputs;
+    r->net_step = p.net_step;
+    return r;
+}
+
+// The raw bytes of n records of size sz at p, read-only, kept alive by owner; viewed as a structured dtype.
+static nb::object nd_view(const void *p, size_t n, size_t sz, nb::handle owner, const char *dtype)
+{
+    static const uint8_t empty[1] = {0};
+    size_t shape[1] = {n * sz};
+    nb::ndarray<nb::numpy, const uint8_t, nb::ndim<1>> raw(p != nullptr ? p : empty, 1, shape, owner);
+    nb::object dt = nb::module_::import_("neat_duel._dtypes").attr(dtype);
+    return nb::cast(raw).attr("view")(dt);
+}
+
+static nd_genome *nd_genome_from_bytes(const uint8_t *b, size_t len, const std::string &name)
+{
+    nd_genome *r = new nd_genome();
+    size_t off = 0;
+    uint32_t ni = 0, no = 0;
+    int err = neat_genome_load(&r->g, &ni, &no, b, len, nullptr, &off);
+    if (err) {
+        delete r;
+        throw nd_error(err, name + ": " + nd_strerror(err) + " at byte offset " + std::to_string(off), name,
+                       (long long)off);
+    }
+    r->n_inputs = ni;
+    r->n_outputs = no;
+    return r;
+}
+
+nd_network *nd_network_of(const nd_genome &g)
+{
+    neat_params p = neat_params_default();
+    p.n_inputs = g.n_inputs;
+    p.n_outputs = g.n_outputs;
+    p.net_step = g.net_step;
+    nd_network *n = new nd_network();
+    int err = neat_phenotype_load(&n->ph, &g.g, &p);
+    if (err) {
+        delete n;
+        nd_fail(err, "the genome's network");
+    }
+    n->sized();
+    return n;
+}
+
+static std::string nd_dot(const nd_genome &s)
+{
+    // inputs at the bottom, outputs at the top; disabled genes dashed and grey; weights as labels and widths
+    std::string d = "digraph genome {\n  rankdir=BT;\n  node [shape=circle, fontsize=10];\n";
+    std::string ins = "  { rank=same;", outs = "  { rank=same;";
+    for (uint32_t i = 0; i < s.g.n_nodes; i++) {
+        const neat_node &n = s.g.nodes[i];
+        std::string id = std::to_string(n.id);
+        const char *shape = n.type == NEAT_NODE_BIAS ? "box" : n.type == NEAT_NODE_INPUT ? "invtriangle"
+                          : n.type == NEAT_NODE_OUTPUT ? "doublecircle" : "circle";
+        const char *label = n.type == NEAT_NODE_BIAS ? "bias" : nullptr;
+        d += "  n" + id + " [shape=" + shape + ", label=\"" + (label ? label : id) + "\"];\n";
+        if (n.type == NEAT_NODE_BIAS || n.type == NEAT_NODE_INPUT)
+            ins += " n" + id + ";";
+        else if (n.type == NEAT_NODE_OUTPUT)
+            outs += " n" + id + ";";
+    }
+    d += ins + " }\n" + outs + " }\n";
+    for (uint32_t i = 0; i < s.g.n_conns; i++) {
+        const neat_conn &c = s.g.conns[i];
+        char w[64];
+        std::snprintf(w, sizeof w, "%.3f", c.weight);
+        double pen = 0.5 + (c.weight < 0 ? -c.weight : c.weight) / 2;
+        char pw[32];
+        std::snprintf(pw, sizeof pw, "%.2f", pen > 4 ? 4.0 : pen);
+        d += "  n" + std::to_string(c.in) + " -> n" + std::to_string(c.out) + " [label=\"" + w + "\", penwidth=" +
+             pw + ", color=\"" + (c.enabled ? (c.weight < 0 ? "#c0392b" : "#2c3e50") : "#bbbbbb") + "\"" +
+             (c.enabled ? "" : ", style=dashed") + "];\n";
+    }
+    return d + "}\n";
+}
+
+void nd_bind_genome(nb::module_ &m)
+{
+    nb::class_<nd_genome>(m, "Genome",
+                          "One genome: its nodes and connection genes (numpy views of the C arrays), fitness and\n"
+                          "species, the network it encodes, its file. A genome taken from a Population is a copy:\n"
+                          "the population's next generation does not change it.")
+        .def_prop_ro("nodes", [](nb::handle self) {
+                const nd_genome &s = nb::cast<const nd_genome &>(self);
+                return nd_view(s.g.nodes, s.g.n_nodes, sizeof(neat_node), self, "NODE");
+            }, nb::sig("def nodes(self) -> numpy.ndarray[typing.Any, numpy.dtype[numpy.void]]"),
+            "The nodes, sorted by id: a read-only structured array (id uint32, type uint8: 0 bias, 1 input,\n"
+            "2 output, 3 hidden), a view of the genome's memory.")
+        .def_prop_ro("conns", [](nb::handle self) {
+                const nd_genome &s = nb::cast<const nd_genome &>(self);
+                return nd_view(s.g.conns, s.g.n_conns, sizeof(neat_conn), self, "CONN");
+            }, nb::sig("def conns(self) -> numpy.ndarray[typing.Any, numpy.dtype[numpy.void]]"),
+            "The connection genes, sorted by innovation number: a read-only structured array (in, out\n"
+            "uint32 node ids; weight float64; innov uint32; enabled uint8), a view of the genome's memory.")
+        .def_prop_ro("n_inputs", [](const nd_genome &s) { return s.n_inputs; }, "Inputs of its task, without the bias.")
+        .def_prop_ro("n_outputs", [](const nd_genome &s) { return s.n_outputs; }, "Outputs of its task.")
+        .def_prop_ro("n_hidden", [](const nd_genome &s) { return neat_genome_hidden_count(&s.g); }, "Hidden nodes.")
+        .def_prop_ro("n_enabled", [](const nd_genome &s) { return neat_genome_enabled_count(&s.g); },
+                     "Enabled connections (those its network has).")
+        .def_prop_ro("fitness", [](const nd_genome &s) -> nb::object {
+                return s.g.has_fitness ? nb::cast(s.g.fitness) : nb::none();
+            }, nb::sig("def fitness(self) -> float | None"), "Its fitness, None before it was given one.")
+        .def_prop_ro("species", [](const nd_genome &s) { return s.g.species; }, "The id of its species.")
+        .def("network", &nd_network_of, nb::rv_policy::take_ownership,
+             "Its network in the runtime, encoded exactly as evolution evaluates it (and as a\n"
+             "microcontroller runs it): step, settle, reset.")
+        .def("distance", [](const nd_genome &a, const nd_genome &b, const nd_params &p) {
+                return neat_genome_distance(&a.g, &b.g, &p.p);
+            }, nb::arg("other"), nb::arg("params"), "The compatibility distance delta under params' c1, c2, c3.")
+        .def("to_bytes", [](const nd_genome &s) {
+                uint8_t *buf = nullptr;
+                size_t len = 0;
+                int err = neat_genome_save(&s.g, s.n_inputs, s.n_outputs, &buf, &len, nullptr);
+                if (err)
+                    nd_fail(err, "saving a genome");
+                nb::bytes b((const char *)buf, len);
+                std::free(buf);
+                return b;
+            }, "The genome file's bytes (docs/formats.md): every gene, exact weights, a checksum.")
+        .def("save", [](const nd_genome &s, const std::string &path) {
+                uint8_t *buf = nullptr;
+                size_t len = 0;
+                int err = neat_genome_save(&s.g, s.n_inputs, s.n_outputs, &buf, &len, nullptr);
+                if (err)
+                    nd_fail(err, "saving a genome");
+                try {
+                    nd_write_file(path, buf, len);
+                } catch (...) {
+                    std::free(buf);
+                    throw;
+                }
+                std::free(buf);
+            }, nb::arg("path"),
+            "Writes the genome file (what duel_evolve writes as champions/gen-G.genome; a run can start\n"
+            "from it), through a temporary file and a rename.")
+        .def_static("from_bytes", [](nb::bytes data, const std::string &name) {
+                return nd_genome_from_bytes((const uint8_t *)data.c_str(), data.size(), name);
+            }, nb::arg("data"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
+            "A genome file's bytes, checked (magic, version, checksum) before anything is trusted;\n"
+            "FormatError names the byte offset of a problem.")
+        .def_static("load", [](const std::string &path) {
+                std::vector<uint8_t> b = nd_read_file(path, ND_GENOME_MAX);
+                return nd_genome_from_bytes(b.data(), b.size(), path);
+            }, nb::arg("path"), nb::rv_policy::take_ownership,
+            "Reads a genome file (FormatError names the file and the byte offset of a problem).")
+        .def("to_dot", &nd_dot,
+             "The network as Graphviz text (dot -Tsvg): inputs at the bottom, disabled genes dashed.")
+        .def("__repr__", [](const nd_genome &s) {
+                std::string f = s.g.has_fitness ? std::to_string(s.g.fitness) : "None";
+                return "Genome(" + std::to_string(s.g.n_nodes) + " nodes, " + std::to_string(s.g.n_conns) +
+                       " connections (" + std::to_string(neat_genome_enabled_count(&s.g)) + " enabled), fitness " +
+                       f + ")";
+            });
+}

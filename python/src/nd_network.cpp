@@ -1,0 +1,138 @@
+// nd_network.cpp - neat_duel.Network: one network in the fixed-point runtime (the microcontroller's executor),
+// stepped from Python with float or Q1.15 values; its blob is exactly what a microcontroller loads.
+#include <cstring>
+
+#include <nanobind/stl/string.h>
+
+#include "nd.h"
+
+#define ND_BLOB_MAX (1u << 20) // a blob of 256 nodes and 65535 connections is 32 + 4 * 65535 bytes
+
+using in_f64 = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using out_f64 = nb::ndarray<double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using in_q15 = nb::ndarray<const int16_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+void nd_network::sized()
+{
+    in.assign(ph.net.n_inputs, 0);
+    out.assign(ph.net.n_outputs, 0);
+}
+
+static nd_network *nd_network_from_blob(const uint8_t *b, size_t len, const std::string &name)
+{
+    nd_network *n = new nd_network();
+    int err = neat_phenotype_load_blob(&n->ph, b, len);
+    if (err) {
+        delete n;
+        throw nd_error(err, name + ": not a network blob this runtime loads: " + nd_strerror(err), name);
+    }
+    n->sized();
+    return n;
+}
+
+// The task's inputs (without the bias) as the runtime's: the bias first, each value in Q1.15 (neat_q15: rounded,
+// saturated to [-1, 1)).
+static void nd_inputs(nd_network &s, const in_f64 &x)
+{
+    size_t n = s.in.size() - 1;
+    if (x.shape(0) != n)
+        throw nd_error(NEAT_E_ARG, "inputs: " + std::to_string(x.shape(0)) + " values for a network of " +
+                                       std::to_string(n) + " inputs (the bias is added here)");
+    const double *v = x.data();
+    s.in[0] = NRT_ONE;
+    for (size_t i = 0; i < n; i++)
+        s.in[i + 1] = neat_q15(v[i]);
+}
+
+static nb::ndarray<nb::numpy, double, nb::ndim<1>> nd_outputs(const nd_network &s)
+{
+    size_t n = s.out.size();
+    double *o = new double[n];
+    for (size_t i = 0; i < n; i++)
+        o[i] = neat_from_q15(s.out[i]);
+    nb::capsule owner(o, [](void *p) noexcept { delete[] (double *)p; });
+    size_t shape[1] = {n};
+    return nb::ndarray<nb::numpy, double, nb::ndim<1>>(o, 1, shape, owner);
+}
+
+void nd_bind_network(nb::module_ &m)
+{
+    nb::class_<nd_network>(m, "Network",
+                           "A network in the runtime (Q1.15 fixed point, the same code a microcontroller runs):\n"
+                           "inputs in [-1, 1) without the bias (added here), outputs in [0, 1).")
+        .def("step", [](nd_network &s, const in_f64 &x) {
+                nd_inputs(s, x);
+                nrt_step(&s.ph.net, s.in.data(), s.out.data());
+                return nd_outputs(s);
+            }, nb::arg("inputs"),
+            "One time step (a control task calls it once per step): the outputs, a new float64 array.")
+        .def("step_into", [](nd_network &s, const in_f64 &x, out_f64 out) {
+                nd_inputs(s, x);
+                if (out.shape(0) != s.out.size())
+                    throw nd_error(NEAT_E_ARG, "out: " + std::to_string(out.shape(0)) + " values for " +
+                                                   std::to_string(s.out.size()) + " outputs");
+                nrt_step(&s.ph.net, s.in.data(), s.out.data());
+                double *o = out.data();
+                for (size_t i = 0; i < s.out.size(); i++)
+                    o[i] = neat_from_q15(s.out[i]);
+            }, nb::arg("inputs"), nb::arg("out"), "step, writing the outputs into out (no allocation).")
+        .def("settle", [](nd_network &s, const in_f64 &x, int max_steps) {
+                nd_inputs(s, x);
+                if (max_steps < 0)
+                    max_steps = s.ph.net.n_nodes + 1;
+                nrt_settle(&s.ph.net, s.in.data(), s.out.data(), max_steps);
+                return nd_outputs(s);
+            }, nb::arg("inputs"), nb::arg("max_steps") = -1,
+            "Steps with the same inputs until no activation changes (a feed-forward task), at most\n"
+            "max_steps times (default: its nodes + 1): the outputs.")
+        .def("step_q15", [](nd_network &s, const in_q15 &x) {
+                size_t n = s.in.size();
+                if (x.shape(0) != n)
+                    throw nd_error(NEAT_E_ARG, "inputs: " + std::to_string(x.shape(0)) + " values for " +
+                                                   std::to_string(n) + " (bias included: the first is 32767)");
+                std::memcpy(s.in.data(), x.data(), n * sizeof(int16_t));
+                nrt_step(&s.ph.net, s.in.data(), s.out.data());
+                int16_t *o = new int16_t[s.out.size()];
+                std::memcpy(o, s.out.data(), s.out.size() * sizeof(int16_t));
+                nb::capsule owner(o, [](void *p) noexcept { delete[] (int16_t *)p; });
+                size_t shape[1] = {s.out.size()};
+                return nb::ndarray<nb::numpy, int16_t, nb::ndim<1>>(o, 1, shape, owner);
+            }, nb::arg("inputs"),
+            "One step in the runtime's own numbers: Q1.15 inputs with the bias first (32767), Q1.15\n"
+            "outputs; bit for bit what nrt_step gives on any machine.")
+        .def("reset", [](nd_network &s) { nrt_reset(&s.ph.net); },
+             "All activations back to 0: call it between trials, or one trial's state leaks into the next.")
+        .def_prop_ro("activations", [](nb::handle self) {
+                nd_network &s = nb::cast<nd_network &>(self);
+                size_t shape[1] = {s.ph.net.n_nodes};
+                return nb::ndarray<nb::numpy, const int16_t, nb::ndim<1>>(s.ph.net.act[s.ph.net.cur], 1, shape, self);
+            }, "The current Q1.15 activation of every node (bias, inputs, outputs, hidden): a read-only view.")
+        .def_prop_ro("n_inputs", [](const nd_network &s) { return s.ph.net.n_inputs - 1; },
+                     "Inputs, without the bias.")
+        .def_prop_ro("n_outputs", [](const nd_network &s) { return s.ph.net.n_outputs; }, "Outputs.")
+        .def_prop_ro("n_hidden", [](const nd_network &s) { return s.ph.net.n_hidden; }, "Hidden nodes.")
+        .def_prop_ro("n_conns", [](const nd_network &s) { return s.ph.net.n_conns; }, "Connections.")
+        .def_prop_ro("step_mode", [](const nd_network &s) {
+                return std::string(s.ph.net.step == NRT_STEP_PROPAGATE ? "propagate" : "sync");
+            }, "'sync' (one layer a step) or 'propagate' (feed-forward paths within the step).")
+        .def_prop_ro("blob", [](const nd_network &s) { return nb::bytes((const char *)s.ph.blob, s.ph.blob_len); },
+                     "The champion blob (docs/formats.md): what duel_evolve writes and a microcontroller loads.")
+        .def("save", [](const nd_network &s, const std::string &path) { nd_write_file(path, s.ph.blob, s.ph.blob_len); },
+             nb::arg("path"), "Writes the blob, through a temporary file and a rename.")
+        .def_static("from_blob", [](nb::bytes b, const std::string &name) {
+                return nd_network_from_blob((const uint8_t *)b.c_str(), b.size(), name);
+            }, nb::arg("blob"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
+            "A network from a blob, checked by the runtime (size, magic, version, checksum, indices) before\n"
+            "a byte is trusted; FormatError otherwise.")
+        .def_static("load", [](const std::string &path) {
+                std::vector<uint8_t> b = nd_read_file(path, ND_BLOB_MAX);
+                return nd_network_from_blob(b.data(), b.size(), path);
+            }, nb::arg("path"), nb::rv_policy::take_ownership,
+            "Reads a blob file (duel_evolve's champions/gen-G.blob, a Network.save).")
+        .def("__repr__", [](const nd_network &s) {
+                return "Network(" + std::to_string(s.ph.net.n_inputs - 1) + " inputs, " +
+                       std::to_string(s.ph.net.n_outputs) + " outputs, " + std::to_string(s.ph.net.n_hidden) +
+                       " hidden, " + std::to_string(s.ph.net.n_conns) + " connections, " +
+                       (s.ph.net.step == NRT_STEP_PROPAGATE ? "propagate" : "sync") + ")";
+            });
+}
