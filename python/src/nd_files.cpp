@@ -8,6 +8,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <nanobind/stl/string.h>
+
 #include "nd.h"
 
 [[noreturn]] static void nd_os_error(const std::string &path, const char *what)

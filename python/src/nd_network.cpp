@@ -44,15 +44,48 @@ static void nd_inputs(nd_network &s, const in_f64 &x)
         s.in[i + 1] = neat_q15(v[i]);
 }
 
-static nb::ndarray<nb::numpy, double, nb::ndim<1>> nd_outputs(const nd_network &s)
+// Inputs given as a list or tuple of numbers (the common case, read without numpy's help), or as a 1-D float64
+// array (any other array is converted by numpy).
+static void nd_inputs_any(nd_network &s, nb::handle x)
+{
+    size_t n = s.in.size() - 1;
+    bool list = PyList_Check(x.ptr()), tuple = !list && PyTuple_Check(x.ptr());
+    if (list || tuple) {
+        Py_ssize_t len = list ? PyList_Size(x.ptr()) : PyTuple_Size(x.ptr());
+        if ((size_t)len != n)
+            throw nd_error(NEAT_E_ARG, "inputs: " + std::to_string(len) + " values for a network of " +
+                                           std::to_string(n) + " inputs (the bias is added here)");
+        s.in[0] = NRT_ONE;
+        for (size_t i = 0; i < n; i++) {
+            PyObject *v = list ? PyList_GetItem(x.ptr(), (Py_ssize_t)i) : PyTuple_GetItem(x.ptr(), (Py_ssize_t)i);
+            double d = PyFloat_AsDouble(v);
+            if (d == -1.0 && PyErr_Occurred())
+                throw nb::python_error();
+            s.in[i + 1] = neat_q15(d);
+        }
+        return;
+    }
+    in_f64 arr;
+    if (!nb::try_cast<in_f64>(x, arr)) {
+        nb::object a = nb::module_::import_("numpy").attr("ascontiguousarray")(x, "float64");
+        if (!nb::try_cast<in_f64>(a, arr))
+            throw nd_error(NEAT_E_ARG, "inputs: a 1-D sequence of numbers");
+        nd_inputs(s, arr);
+        return;
+    }
+    nd_inputs(s, arr);
+}
+
+// The outputs as a list of floats (what a fitness function indexes or sums; np.asarray makes an array of it).
+static nb::list nd_outputs(const nd_network &s)
 {
     size_t n = s.out.size();
-    double *o = new double[n];
+    PyObject *l = PyList_New((Py_ssize_t)n);
+    if (l == nullptr)
+        throw nb::python_error();
     for (size_t i = 0; i < n; i++)
-        o[i] = neat_from_q15(s.out[i]);
-    nb::capsule owner(o, [](void *p) noexcept { delete[] (double *)p; });
-    size_t shape[1] = {n};
-    return nb::ndarray<nb::numpy, double, nb::ndim<1>>(o, 1, shape, owner);
+        PyList_SetItem(l, (Py_ssize_t)i, PyFloat_FromDouble(neat_from_q15(s.out[i])));
+    return nb::steal<nb::list>(l);
 }
 
 void nd_bind_network(nb::module_ &m)
@@ -60,12 +93,14 @@ void nd_bind_network(nb::module_ &m)
     nb::class_<nd_network>(m, "Network",
                            "A network in the runtime (Q1.15 fixed point, the same code a microcontroller runs):\n"
                            "inputs in [-1, 1) without the bias (added here), outputs in [0, 1).")
-        .def("step", [](nd_network &s, const in_f64 &x) {
-                nd_inputs(s, x);
+        .def("step", [](nd_network &s, nb::handle x) {
+                nd_inputs_any(s, x);
                 nrt_step(&s.ph.net, s.in.data(), s.out.data());
                 return nd_outputs(s);
             }, nb::arg("inputs"),
-            "One time step (a control task calls it once per step): the outputs, a new float64 array.")
+            nb::sig("def step(self, inputs: collections.abc.Sequence[float] | numpy.typing.ArrayLike) -> list[float]"),
+            "One time step (a control task calls it once per step): inputs a list, tuple or 1-D array of\n"
+            "n_inputs numbers; the outputs as a list of floats.")
         .def("step_into", [](nd_network &s, const in_f64 &x, out_f64 out) {
                 nd_inputs(s, x);
                 if (out.shape(0) != s.out.size())
@@ -76,13 +111,15 @@ void nd_bind_network(nb::module_ &m)
                 for (size_t i = 0; i < s.out.size(); i++)
                     o[i] = neat_from_q15(s.out[i]);
             }, nb::arg("inputs"), nb::arg("out"), "step, writing the outputs into out (no allocation).")
-        .def("settle", [](nd_network &s, const in_f64 &x, int max_steps) {
-                nd_inputs(s, x);
+        .def("settle", [](nd_network &s, nb::handle x, int max_steps) {
+                nd_inputs_any(s, x);
                 if (max_steps < 0)
                     max_steps = s.ph.net.n_nodes + 1;
                 nrt_settle(&s.ph.net, s.in.data(), s.out.data(), max_steps);
                 return nd_outputs(s);
             }, nb::arg("inputs"), nb::arg("max_steps") = -1,
+            nb::sig("def settle(self, inputs: collections.abc.Sequence[float] | numpy.typing.ArrayLike, "
+                    "max_steps: int = -1) -> list[float]"),
             "Steps with the same inputs until no activation changes (a feed-forward task), at most\n"
             "max_steps times (default: its nodes + 1): the outputs.")
         .def("step_q15", [](nd_network &s, const in_q15 &x) {
