@@ -11,6 +11,7 @@ PKGS="$PKGS valgrind"                                                           
 PKGS="$PKGS graphviz fonts-dejavu-core libosmesa6-dev libpng-dev ffmpeg"            # network pictures, replays, videos
 PKGS="$PKGS liblcm-dev liblcm-bin liblcm-java libglib2.0-dev"                       # LCM nodes and logs
 PKGS="$PKGS python3-matplotlib python3-pip"                                         # the experiment's figures; pip
+PKGS="$PKGS python3-venv python3-dev"                                               # the Python package (python/)
 PKGS="$PKGS openmpi-bin libopenmpi-dev"                                             # runs across processes (MPI)
 # LCM's TCP hub (lcm.lcm.TCPService, the tests over tcpq://) runs on any Java runtime
 command -v java > /dev/null 2>&1 || PKGS="$PKGS default-jre-headless"
@@ -48,3 +49,19 @@ if ! PYTHONPATH="$pylcm" "$py" -c 'import lcm' 2> /dev/null; then
   PIP_BREAK_SYSTEM_PACKAGES=1 "$py" -m pip install -q --no-deps --root-user-action=ignore --disable-pip-version-check \
     --upgrade --target "$pylcm" lcm==1.5.3
 fi
+# The Python package's build and tests (python/requirements-test.txt) in a virtual environment of their own
+# (Debian's Python refuses system-wide pip installs): NEAT_PY_VENV, by default ~/.local/lib/neat-duel/venv. Made
+# under a lock, so that two test suites started at once do not build it over each other.
+venv=${NEAT_PY_VENV:-$HOME/.local/lib/neat-duel/venv}
+req="$(cd "$(dirname "$0")/.." && pwd)/python/requirements-test.txt"
+mkdir -p "$(dirname "$venv")"
+(
+  flock 9
+  if ! cmp -s "$req" "$venv/requirements-test.txt" 2> /dev/null; then
+    echo "installing: the Python test environment (python/requirements-test.txt, from PyPI) into $venv"
+    rm -rf "$venv"
+    "$py" -m venv "$venv"
+    "$venv/bin/python" -m pip install -q --disable-pip-version-check -r "$req"
+    cp "$req" "$venv/requirements-test.txt"
+  fi
+) 9> "$venv.lock"

@@ -8,7 +8,9 @@ jobs=$(nproc)
 ./scripts/deps.sh
 
 echo "== build and unit tests (RelWithDebInfo)"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNEAT_TOOLS=ON >/dev/null
+# with the Python package (python/), built against the test environment deps.sh made
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNEAT_TOOLS=ON -DNEAT_PYTHON=ON \
+      -DPython_EXECUTABLE="${NEAT_PY_VENV:-$HOME/.local/lib/neat-duel/venv}/bin/python" >/dev/null
 ninja -C build
 ctest --test-dir build --output-on-failure -j "$jobs"
 

@@ -267,7 +267,7 @@ void nd_bind_population(nb::module_ &m)
                     for (uint32_t i = 0; i < n; i++) {
                         nb::object g = nb::cast(nd_genome_copy(neat_pop_genome(pop, i), *p), nb::rv_policy::take_ownership);
                         nb::object r = fitness(g); // a raise goes through: the generation stays to be evaluated again
-                        double f;
+                        double f = 0.0;
                         if (!nb::try_cast<double>(r, f))
                             throw nb::type_error(("the fitness of genome " + std::to_string(i) + " is " +
                                                   nb::cast<std::string>(nb::repr(r)) + ", not a number").c_str());
