@@ -112,13 +112,13 @@ void nd_bind_genome(nb::module_ &m)
         .def_prop_ro("nodes", [](nb::handle self) {
                 const nd_genome &s = nb::cast<const nd_genome &>(self);
                 return nd_view(s.g.nodes, s.g.n_nodes, sizeof(neat_node), self, "NODE");
-            }, nb::sig("def nodes(self) -> numpy.ndarray[typing.Any, numpy.dtype[numpy.void]]"),
+            }, nb::sig("def nodes(self) -> numpy.typing.NDArray[numpy.void]"),
             "The nodes, sorted by id: a read-only structured array (id uint32, type uint8: 0 bias, 1 input,\n"
             "2 output, 3 hidden), a view of the genome's memory.")
         .def_prop_ro("conns", [](nb::handle self) {
                 const nd_genome &s = nb::cast<const nd_genome &>(self);
                 return nd_view(s.g.conns, s.g.n_conns, sizeof(neat_conn), self, "CONN");
-            }, nb::sig("def conns(self) -> numpy.ndarray[typing.Any, numpy.dtype[numpy.void]]"),
+            }, nb::sig("def conns(self) -> numpy.typing.NDArray[numpy.void]"),
             "The connection genes, sorted by innovation number: a read-only structured array (in, out\n"
             "uint32 node ids; weight float64; innov uint32; enabled uint8), a view of the genome's memory.")
         .def_prop_ro("n_inputs", [](const nd_genome &s) { return s.n_inputs; }, "Inputs of its task, without the bias.")

@@ -146,6 +146,7 @@ void nd_bind_params(nb::module_ &m)
                 nd_set(*self, nb::cast<std::string>(item.first), item.second);
             nd_check(*self);
         },
+        nb::sig("def __init__(self, **kwargs: int | float | bool | str) -> None"),
         "Appendix A's values, with the keywords given set (ParamError if one is unknown or out of range).");
     size_t n;
     const neat_cfg_key *keys = neat_config_keys(&n);
@@ -206,7 +207,8 @@ void nd_bind_params(nb::module_ &m)
                 for (size_t i = 0; i < nk; i++)
                     d[ks[i].name] = nd_get(s, &ks[i]);
                 return d;
-            }, "Every parameter by name: Params(**p.to_dict()) == p.")
+            }, nb::sig("def to_dict(self) -> dict[str, int | float | bool | str]"),
+            "Every parameter by name: Params(**p.to_dict()) == p.")
         .def("to_ini", &nd_to_ini, "The [neat] section with every key, as duel_evolve config --dump writes it.")
         .def_static("from_ini",
                     [](const std::string &path) {
@@ -243,5 +245,6 @@ void nd_bind_params(nb::module_ &m)
                 }
                 return r + ")";
             });
-    cls.attr("__hash__") = nb::none();
+    // equal by value and changeable: not a dict key or a set member
+    cls.def("__hash__", [](const nd_params &) -> Py_hash_t { throw nb::type_error("unhashable type: 'Params'"); });
 }
