@@ -24,6 +24,7 @@
 #include "duel_generations.h"
 #include "duel_outputs.h"
 #include "duel_plan.h"
+#include "duel_runtag.h"
 #include "duel_games.h"
 #include "duel_lcm_champ.h"
 #include "duel_mpi.h"
@@ -642,16 +643,6 @@ static void duel_report_fixed(duel_run *R, const duel_fixed_report *rep, double 
  * ([run] train_layouts = comparison) one of the 144 comparison layouts
  * drawn from the run's seed and the generation (the same for any number of
  * threads, ranks or resumes). */
-static int32_t duel_train_config(const duel_config *cfg, uint32_t g)
-{
-    uint64_t keys[2];
-    if (cfg->train_layouts != DUEL_TRAIN_COMPARISON)
-        return DUEL_TRAINING;
-    keys[0] = 0x7472616eu; /* "tran": apart from every other use of the seed */
-    keys[1] = g;
-    return (int32_t)(neat_seed_derive(cfg->seed, keys, 2) % DUEL_CONFIGS);
-}
-
 /* Generations until the configured count, a signal or an error. */
 static int duel_loop(duel_run *R)
 {
@@ -878,54 +869,23 @@ static int duel_go(duel_run *R)
     return err;
 }
 
-/* The run's tag in its checkpoint (the game tag): the world's rules first
- * (their canonical bytes: duel_ckpt_world reads them), then what else makes
- * its games: "RUN1", the training food ([run] train_layouts), the number of
- * fixed opponents and, for a run against them, its seed, [opponents] games
- * and fitness, the step mode, and each opponent (a builtin's number, or a
- * blob's hash). Resume compares it with what config.ini makes: a run's
- * games cannot change under it. */
-#define DUEL_TAG_MAX (DUEL_RULES_BYTES + 32 + 12 * DUEL_MAX_OPPONENTS)
-static size_t duel_put_u32(uint8_t *p, uint32_t v)
+/* The run's tag (duel_run_tag, duel_runtag.c) with its fixed opponents' identities. */
+static int duel_run_tag_of(const duel_run *R, uint8_t buf[DUEL_TAG_MAX], size_t *len)
 {
-    p[0] = (uint8_t)v;
-    p[1] = (uint8_t)(v >> 8);
-    p[2] = (uint8_t)(v >> 16);
-    p[3] = (uint8_t)(v >> 24);
-    return 4;
-}
-
-static int duel_run_tag(const duel_run *R, uint8_t buf[DUEL_TAG_MAX], size_t *len)
-{
-    size_t at = DUEL_RULES_BYTES;
+    duel_opp_id ids[DUEL_MAX_OPPONENTS];
     uint32_t k;
-    if (duel_rules_encode(&R->cfg.world, buf) != DUEL_OK)
-        return NEAT_E_ARG;
-    memcpy(buf + at, "RUN1", 4);
-    at += 4;
-    at += duel_put_u32(buf + at, (uint32_t)R->cfg.train_layouts);
-    at += duel_put_u32(buf + at, R->cfg.opp.n);
-    if (R->cfg.opp.n > 0) {
-        at += duel_put_u32(buf + at, R->cfg.seed);
-        at += duel_put_u32(buf + at, R->cfg.opp.layouts);
-        at += duel_put_u32(buf + at, (uint32_t)R->cfg.opp.fitness);
-        at += duel_put_u32(buf + at, (uint32_t)R->cfg.neat.net_step);
-        for (k = 0; k < R->cfg.opp.n; k++) {
-            uint64_t id = R->opp[k].blob != NULL ? duel_blob_hash(R->opp[k].blob, R->opp[k].len) : (uint64_t)R->opp[k].len;
-            at += duel_put_u32(buf + at, R->opp[k].blob != NULL);
-            at += duel_put_u32(buf + at, (uint32_t)id);
-            at += duel_put_u32(buf + at, (uint32_t)(id >> 32));
-        }
+    for (k = 0; k < R->cfg.opp.n; k++) {
+        ids[k].is_blob = R->opp[k].blob != NULL;
+        ids[k].id = R->opp[k].blob != NULL ? duel_blob_hash(R->opp[k].blob, R->opp[k].len) : (uint64_t)R->opp[k].len;
     }
-    *len = at;
-    return 0;
+    return duel_run_tag(&R->cfg, ids, buf, len);
 }
 
 static int duel_tag_run(duel_run *R)
 {
     uint8_t tag[DUEL_TAG_MAX];
     size_t len;
-    int e = duel_run_tag(R, tag, &len);
+    int e = duel_run_tag_of(R, tag, &len);
     if (e)
         return e;
     return R->fixed != NULL ? neat_pop_set_game(duel_fixed_pop(R->fixed), tag, len)
@@ -941,7 +901,7 @@ static int duel_check_tag(const duel_run *R, const uint8_t *tag, size_t len, con
     size_t wlen;
     duel_rules made;
     char a[40], b[40];
-    if (duel_run_tag(R, want, &wlen) != 0)
+    if (duel_run_tag_of(R, want, &wlen) != 0)
         return -1;
     made = *duel_rules_v1();
     if (len > 0 && duel_rules_decode(&made, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, NULL) != DUEL_OK) {
@@ -1045,13 +1005,20 @@ static int duel_create(duel_run *R)
     neat_genome g;
     neat_start st;
     int e;
+    if (R->cfg.opp.n == 0) {
+        /* a coevolution: as the Python package starts one (duel_runtag.c) */
+        e = duel_coev_new(&R->coev, &R->cfg, err, sizeof err);
+        if (e)
+            fprintf(stderr, "duel_evolve: %s\n", err);
+        return e;
+    }
     if (duel_start_genome(&R->cfg, &g, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;
     }
     st.genome = &g;
     st.keep_weights = 0;
-    if (R->cfg.opp.n > 0) {
+    {
         neat_pop *pop = NULL;
         if ((e = duel_load_opponents(R, 0)) != 0) {
             neat_genome_free(&g, NULL);
@@ -1060,8 +1027,6 @@ static int duel_create(duel_run *R)
         e = neat_pop_create(&pop, &R->cfg.neat, &st, R->cfg.seed, NULL);
         if (e == 0)
             e = duel_fixed_new(&R->fixed, pop, &R->cfg, R->opp, R->cfg.opp.n);
-    } else {
-        e = neat_coev_create(&R->coev, &R->cfg.neat, &R->cfg.coev, &st, R->cfg.seed, NULL);
     }
     neat_genome_free(&g, NULL);
     if (e == 0)

@@ -1,0 +1,34 @@
+/* duel_runtag.h - what makes a run's games: its checkpoint's game tag, each generation's training food, and the coevolution a configuration starts; shared by duel_evolve and the Python package so that both make the same run. */
+#ifndef DUEL_RUNTAG_H
+#define DUEL_RUNTAG_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "duel_config.h"
+#include "neat_coev.h"
+
+/* A fixed opponent in the tag: a builtin (is_blob 0, id its number) or a blob (is_blob 1, id its duel_blob_hash). */
+typedef struct duel_opp_id {
+    int is_blob;
+    uint64_t id;
+} duel_opp_id;
+
+/* The run's tag (the game tag its checkpoint keeps): the world's rules first (their canonical bytes:
+ * duel_ckpt_world reads them), then "RUN1", the training food ([run] train_layouts), the number of fixed
+ * opponents and, for a run against them (opp: cfg->opp.n entries), its seed, [opponents] games and fitness, the
+ * step mode, and each opponent. Resume compares it with what config.ini makes: a run's games cannot change under
+ * it. 0, or NEAT_E_ARG (rules that do not encode). */
+#define DUEL_TAG_MAX (DUEL_RULES_BYTES + 32 + 12 * DUEL_MAX_OPPONENTS)
+int duel_run_tag(const duel_config *cfg, const duel_opp_id *opp, uint8_t buf[DUEL_TAG_MAX], size_t *len);
+
+/* The food of generation g's training games: DUEL_TRAINING, or with [run] train_layouts = comparison one of the
+ * 144 comparison layouts drawn from (seed, g). */
+int32_t duel_train_config(const duel_config *cfg, uint32_t g);
+
+/* The coevolution of a configuration without fixed opponents, as duel_evolve run starts it: both populations
+ * from its start topology and seed, tagged with duel_run_tag. 0; 2 with err (the configuration's fault: its start
+ * genome); 1 with err (the machine's). */
+int duel_coev_new(neat_coev **out, const duel_config *cfg, char *err, size_t err_len);
+
+#endif /* DUEL_RUNTAG_H */
