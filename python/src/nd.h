@@ -12,6 +12,7 @@
 #include "neat.h"
 #include "neat_phenotype.h"
 #include "nrt.h"
+#include "neat_coev.h"
 extern "C" {
 #include "neat_config.h"
 #include "neat_ini.h"
@@ -80,3 +81,23 @@ void nd_bind_population(nb::module_ &m);
 struct nd_params {
     neat_params p = neat_params_default();
 };
+
+// A game played in C (neat_duel.Duel): its batch function and data for coevolution c's next generation.
+struct nd_native_game {
+    neat_play_fn play = nullptr;
+    void *ud = nullptr;
+};
+// 1 with out filled when game is a built-in game object (prepared for c's parameters and next generation), else 0.
+bool nd_native_game_of(nb::handle game, neat_coev *c, nd_native_game *out);
+// A coevolution (neat_duel.Coevolution).
+struct nd_coev {
+    neat_coev *c = nullptr;
+    nd_coev() = default;
+    nd_coev(const nd_coev &) = delete;
+    nd_coev &operator=(const nd_coev &) = delete;
+    ~nd_coev() { neat_coev_free(c); }
+};
+// Takes ownership of c as a neat_duel.Coevolution.
+nd_coev *nd_coev_wrap(neat_coev *c);
+void nd_bind_coev(nb::module_ &m);
+void nd_bind_duel(nb::module_ &m);

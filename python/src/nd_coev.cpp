@@ -13,13 +13,6 @@
 
 #define ND_CKPT_MAX ((size_t)1 << 30)
 
-struct nd_coev {
-    neat_coev *c = nullptr;
-    nd_coev() = default;
-    nd_coev(const nd_coev &) = delete;
-    nd_coev &operator=(const nd_coev &) = delete;
-    ~nd_coev() { neat_coev_free(c); }
-};
 
 static neat_coev *nd_c(const nd_coev &s)
 {
@@ -190,8 +183,9 @@ void nd_bind_coev(nb::module_ &m)
                 if (neat_params_check(&params.p, &field) != NEAT_OK)
                     throw nd_error(NEAT_E_PARAM, std::string("parameter ") + (field ? field : "?") + " out of range");
                 if (params.p.pop_stagnation != 0)
-                    throw nd_error(NEAT_E_PARAM, "pop_stagnation must be 0 in a coevolution (its fitness is not "
-                                                 "absolute: neat_coev.h)");
+                    throw nd_error(NEAT_E_PARAM, "pop_stagnation must be 0 in a coevolution (Params(pop_stagnation=0):"
+                                                 " a count of wins against changing opponents is not an absolute "
+                                                 "fitness, neat_coev.h)");
                 neat_start st;
                 st.genome = start != nullptr ? &start->g : nullptr;
                 st.keep_weights = 0;
