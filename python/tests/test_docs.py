@@ -1,4 +1,4 @@
-"""docs/python.md: every ```python block runs, in order, in one namespace (as a reader would type them)."""
+"""docs/python.md and the README: every ```python block runs, in order, in one namespace (as a reader types them)."""
 from __future__ import annotations
 
 import os
@@ -10,14 +10,18 @@ import pytest
 from conftest import ROOT
 
 
-def blocks() -> list[str]:
-    text = (ROOT / "docs" / "python.md").read_text()
+def blocks(doc: str) -> list[str]:
+    text = (ROOT / doc).read_text()
+    if doc == "README.md":  # its section on the package (its other Python is LCM's: docs/lcm.md)
+        text = text[text.index("\n## Python\n") :]
+        text = text[: text.index("\n## ", 1)]
     return re.findall(r"^```python\n(.*?)^```", text, re.S | re.M)
 
 
-def test_the_guide_runs(tmp_path: pathlib.Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    found = blocks()
-    assert len(found) >= 8
+@pytest.mark.parametrize("doc, at_least", [("docs/python.md", 8), ("README.md", 1)])
+def test_the_guide_runs(doc: str, at_least: int, tmp_path: pathlib.Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    found = blocks(doc)
+    assert len(found) >= at_least
     # the guide's paths are the repository's: bench/, configs/ from the directory it runs in
     for d in ("bench", "configs"):
         os.symlink(ROOT / d, tmp_path / d)
@@ -25,6 +29,6 @@ def test_the_guide_runs(tmp_path: pathlib.Path, monkeypatch: pytest.MonkeyPatch)
     ns: dict[str, object] = {"__name__": "__guide__"}
     for i, code in enumerate(found):
         try:
-            exec(compile(code, f"docs/python.md block {i + 1}", "exec"), ns)
+            exec(compile(code, f"{doc} block {i + 1}", "exec"), ns)
         except Exception as e:  # name the block
-            raise AssertionError(f"docs/python.md, python block {i + 1} fails: {e!r}\n{code}") from e
+            raise AssertionError(f"{doc}, python block {i + 1} fails: {e!r}\n{code}") from e

@@ -64,6 +64,10 @@ skip() {
   "./scripts/test.sh"*) echo "the whole test suite: this test is part of it" ;;
   *"--hostfile"*) echo "a hostfile names a cluster's machines: there is none here" ;;
   "sbatch "*) echo "a Slurm cluster: there is none here" ;;
+  "git clone . /tmp/a"* | "(cd /tmp/a && CI=true bash .ci/run"*) echo "two whole test suites at once: this test is part of one" ;;
+  "python3 -m venv .venv"* | ".venv/bin/"*)
+    echo "the Python package's installation: CTest python/install builds and installs it as pip does" ;;
+  "PYTHONPATH=build/python "*) [ -d "$build/python/neat_duel" ] || echo "this build has no Python package (NEAT_PYTHON=OFF)" ;;
   esac
 }
 # Reductions: what a command becomes here (the rest, and every command of several lines (a loop, a here-document),
@@ -103,6 +107,7 @@ reduce() { # reduce COMMAND: prints the command to run
   "bench/duel_instructions.sh"*) c="bench/duel_instructions.sh build 2" ;;
   "bench/generation_cost.sh "*) c=${c#bench/generation_cost.sh }; c="bench/generation_cost.sh build ${c#* }" ;;
   *"neat_bench pole"*) c="$c --runs 2" ;;
+  *"bench/python_xor.py"*) c="${c/--rounds 3/--rounds 1}" ;;
   esac
   echo "$c"
 }
