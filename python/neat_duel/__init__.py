@@ -11,7 +11,7 @@ package binds them. docs/python.md is the guide::
 """
 from __future__ import annotations
 
-from . import errors
+from . import errors, gym, runs
 from ._core import (
     Q15_ONE,
     VERSION,
@@ -62,6 +62,8 @@ __all__ = [
     "q15",
     "seed_derive",
     "errors",
+    "gym",
+    "runs",
     "ArgumentError",
     "CountersError",
     "FitnessError",

@@ -101,3 +101,4 @@ struct nd_coev {
 nd_coev *nd_coev_wrap(neat_coev *c);
 void nd_bind_coev(nb::module_ &m);
 void nd_bind_duel(nb::module_ &m);
+void nd_bind_run(nb::module_ &m);

@@ -639,13 +639,10 @@ static void duel_report_fixed(duel_run *R, const duel_fixed_report *rep, double 
              secs);
 }
 
-/* The food of generation g's training games: the rules' training items, or
- * ([run] train_layouts = comparison) one of the 144 comparison layouts
- * drawn from the run's seed and the generation (the same for any number of
- * threads, ranks or resumes). */
 /* Generations until the configured count, a signal or an error. */
 static int duel_loop(duel_run *R)
 {
+    duel_stop = 0; /* a process that plays several runs (the Python package) starts each without a stop */
     duel_signal_install(&duel_stop, "duel_evolve: a second signal: stopped at once; the last checkpoint stands "
                                     "(duel_evolve resume continues from it)\n");
     R->tty = isatty(2);

@@ -22,8 +22,9 @@ typedef struct duel_opp_id {
 #define DUEL_TAG_MAX (DUEL_RULES_BYTES + 32 + 12 * DUEL_MAX_OPPONENTS)
 int duel_run_tag(const duel_config *cfg, const duel_opp_id *opp, uint8_t buf[DUEL_TAG_MAX], size_t *len);
 
-/* The food of generation g's training games: DUEL_TRAINING, or with [run] train_layouts = comparison one of the
- * 144 comparison layouts drawn from (seed, g). */
+/* The food of generation g's training games: the rules' training items (DUEL_TRAINING), or ([run] train_layouts
+ * = comparison) one of the 144 comparison layouts drawn from the run's seed and the generation (the same for any
+ * number of threads, ranks or resumes). */
 int32_t duel_train_config(const duel_config *cfg, uint32_t g);
 
 /* The coevolution of a configuration without fixed opponents, as duel_evolve run starts it: both populations

@@ -1,0 +1,138 @@
+"""duel_evolve's runs from Python: the command's own run and resume, in this process, and a run directory read back.
+
+A run started here is a duel_evolve run directory (config.ini, checkpoint.bin, generations.csv, dominance.csv,
+champions/, log.txt): ``duel_evolve resume`` continues it, and ``resume`` here continues the command's. Every
+refusal is the command's (a directory that is not a run, a hand-edited config.ini, lost records: docs/tools.md,
+docs/hardening.md), raised as RunError with its message::
+
+    from neat_duel import runs
+
+    r = runs.run("configs/quick.ini", "runs/mine", generations=20)
+    r = runs.resume("runs/mine", generations=40)
+    print(r.dominants()[-1], r.champion(r.dominants()[-1]["generation"]))
+"""
+from __future__ import annotations
+
+import os
+import pathlib
+import tempfile
+from typing import Any, Iterable, Union
+
+from ._core import Coevolution, DuelConfig, Genome, Network, read_dominance, read_generations, run_command
+from .errors import NeatError
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+class RunError(NeatError):
+    """duel_evolve's run or resume refused or failed: status is its exit status (2: the input's fault, 1: the
+    machine's, 130: interrupted), the message its lines on stderr."""
+
+    def __init__(self, message: str, status: int, path: str | None = None) -> None:
+        super().__init__(message, 0, path)
+        self.status = status
+
+
+class RunDir:
+    """A run directory (docs/tools.md, "The run directory"), read through duel_evolve's readers."""
+
+    def __init__(self, path: PathLike) -> None:
+        self.path = pathlib.Path(path)
+        if not (self.path / "config.ini").is_file():
+            raise FileNotFoundError(f"{self.path}: not a run directory (no config.ini)")
+
+    def config(self) -> DuelConfig:
+        """The run's configuration (its config.ini)."""
+        return DuelConfig.from_ini(str(self.path / "config.ini"))
+
+    def checkpoint(self) -> Coevolution:
+        """The coevolution in its checkpoint.bin (a coevolution run's; Coevolution.load)."""
+        return Coevolution.load(str(self.path / "checkpoint.bin"))
+
+    def generations(self) -> list[dict[str, Any]]:
+        """generations.csv's checked fields, a record per population and generation (FormatError on a damaged
+        file, with what works: docs/hardening.md)."""
+        return read_generations(str(self.path))
+
+    def dominants(self) -> list[dict[str, Any]]:
+        """dominance.csv: level, generation, population, hidden, connections, and its wins and losses against every
+        level below (the last one first)."""
+        return read_dominance(str(self.path))
+
+    def champion(self, generation: int) -> Genome:
+        """Generation's champion (champions/gen-G.genome)."""
+        return Genome.load(str(self.path / "champions" / f"gen-{generation:05d}.genome"))
+
+    def champion_network(self, generation: int) -> Network:
+        """Generation's champion blob (champions/gen-G.blob): the network duel_evolve plays and exports."""
+        return Network.load(str(self.path / "champions" / f"gen-{generation:05d}.blob"))
+
+    def __repr__(self) -> str:
+        return f"RunDir({str(self.path)!r})"
+
+
+def _call(command: str, args: list[str], path: str) -> None:
+    status, text = run_command(command, args)
+    if status == 130:
+        raise KeyboardInterrupt(text.strip() or "interrupted")
+    if status != 0:
+        lines = [x for x in text.splitlines() if x.strip()]
+        raise RunError(lines[-1] if lines else f"duel_evolve {command}: exit status {status}", status, path)
+
+
+def _options(generations: int | None, threads: int | None, sets: Iterable[str], quiet: bool) -> list[str]:
+    a: list[str] = []
+    if generations is not None:
+        a += ["--generations", str(generations)]
+    if threads is not None:
+        a += ["--threads", str(threads)]
+    for s in sets:
+        a += ["--set", s]
+    if quiet:
+        a.append("--quiet")
+    return a
+
+
+def run(
+    config: PathLike | DuelConfig,
+    out: PathLike,
+    *,
+    generations: int | None = None,
+    seed: int | None = None,
+    threads: int | None = None,
+    set: Iterable[str] = (),
+    quiet: bool = True,
+) -> RunDir:
+    """duel_evolve run --config CONFIG --out OUT: a coevolution (or a run against fixed opponents) into a new run
+    directory. config is a configuration file or a DuelConfig; set lists KEY=VALUE overrides (as --set). Returns
+    the run directory; RunError with the command's message when it refuses or fails."""
+    args = ["--out", os.fspath(out)] + _options(generations, threads, set, quiet)
+    if seed is not None:
+        args += ["--seed", str(seed)]
+    if isinstance(config, DuelConfig):
+        with tempfile.NamedTemporaryFile("w", suffix=".ini", delete=False) as f:
+            f.write(config.to_ini())
+        try:
+            _call("run", ["--config", f.name] + args, os.fspath(out))
+        finally:
+            os.unlink(f.name)
+    else:
+        _call("run", ["--config", os.fspath(config)] + args, os.fspath(out))
+    return RunDir(out)
+
+
+def resume(
+    directory: PathLike,
+    *,
+    generations: int | None = None,
+    threads: int | None = None,
+    set: Iterable[str] = (),
+    quiet: bool = True,
+) -> RunDir:
+    """duel_evolve resume DIR: continues a run (to generations in all, when given; a finished run is only
+    repaired). RunError with the command's message when it refuses or fails."""
+    _call("resume", [os.fspath(directory)] + _options(generations, threads, set, quiet), os.fspath(directory))
+    return RunDir(directory)
+
+
+__all__ = ["RunDir", "RunError", "run", "resume"]

@@ -1,0 +1,140 @@
+// nd_run.cpp - duel_evolve's run and resume called in this process (tools/cli/duel_run.c, the very code of the
+// command): a run started from Python is a duel_evolve run directory, which the command resumes, and the other way
+// round; and a run directory's records read back by the C readers.
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include <unistd.h>
+
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/tuple.h>
+#include <nanobind/stl/vector.h>
+
+#include "nd.h"
+extern "C" {
+#include "duel_cli.h"
+#include "duel_dominance.h"
+#include "duel_generations.h"
+}
+
+// The command's lines to stderr are kept (for the exception's message) and passed on to the real stderr as they
+// were; Ctrl-C stops the run after its generation in flight, as in the command, and is Python's again afterwards.
+static std::tuple<int, std::string> nd_duel_evolve(const std::string &command, const std::vector<std::string> &args)
+{
+    int (*cmd)(int, char **) = command == "run" ? duel_cmd_run : command == "resume" ? duel_cmd_resume : nullptr;
+    if (cmd == nullptr)
+        throw nd_error(NEAT_E_ARG, "command: 'run' or 'resume'");
+    std::vector<std::vector<char>> store;
+    std::vector<char *> argv;
+    for (const std::string &a : args) {
+        store.emplace_back(a.begin(), a.end());
+        store.back().push_back('\0');
+    }
+    for (auto &s : store)
+        argv.push_back(s.data());
+    argv.push_back(nullptr);
+    std::fflush(stderr);
+    std::fflush(stdout);
+    FILE *err = std::tmpfile();
+    int saved = dup(2);
+    if (err == nullptr || saved < 0 || dup2(fileno(err), 2) < 0) {
+        if (err != nullptr)
+            std::fclose(err);
+        if (saved >= 0)
+            close(saved);
+        throw nd_error(NEAT_E_NOMEM, "cannot keep the run's messages (no temporary file)");
+    }
+    struct sigaction old_int, old_term;
+    sigaction(SIGINT, nullptr, &old_int);
+    sigaction(SIGTERM, nullptr, &old_term);
+    int rc;
+    {
+        nb::gil_scoped_release nogil;
+        rc = cmd((int)args.size(), argv.data());
+        std::fflush(stderr);
+        std::fflush(stdout);
+    }
+    sigaction(SIGINT, &old_int, nullptr);
+    sigaction(SIGTERM, &old_term, nullptr);
+    dup2(saved, 2);
+    close(saved);
+    std::string text;
+    std::rewind(err);
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, err)) > 0)
+        text.append(buf, n);
+    std::fclose(err);
+    if (!text.empty() && write(2, text.data(), text.size()) < 0) {
+        // nowhere to say it
+    }
+    return {rc, text};
+}
+
+static nb::list nd_dominance(const std::string &dir)
+{
+    duel_dominance_row *rows = nullptr;
+    duel_dominance_score *scores = nullptr;
+    uint32_t n = 0;
+    char err[4400];
+    if (duel_dominance_read_scores(dir.c_str(), &rows, &n, &scores, err, sizeof err) != 0)
+        throw nd_error(NEAT_E_FORMAT, err, dir + "/dominance.csv");
+    nb::list out;
+    for (uint32_t i = 0; i < n; i++) {
+        nb::dict d;
+        d["level"] = rows[i].level;
+        d["generation"] = rows[i].generation;
+        d["population"] = std::string(rows[i].pop);
+        d["hidden"] = rows[i].hidden;
+        d["connections"] = rows[i].conns;
+        std::vector<uint32_t> w, l;
+        for (uint32_t k = 0; k + 1 < rows[i].level; k++) {
+            w.push_back(scores[rows[i].scores + k].wins);
+            l.push_back(scores[rows[i].scores + k].losses);
+        }
+        d["wins"] = w;
+        d["losses"] = l;
+        out.append(d);
+    }
+    std::free(rows);
+    std::free(scores);
+    return out;
+}
+
+static nb::list nd_generations(const std::string &dir)
+{
+    duel_gen_row *rows = nullptr;
+    size_t n = 0;
+    char err[4400];
+    if (duel_generations_read(dir.c_str(), &rows, &n, err, sizeof err) != 0)
+        throw nd_error(NEAT_E_FORMAT, err, dir + "/generations.csv");
+    nb::list out;
+    for (size_t i = 0; i < n; i++) {
+        nb::dict d;
+        d["generation"] = rows[i].generation;
+        d["population"] = std::string(1, rows[i].pop);
+        d["min_hidden"] = rows[i].min_hidden;
+        d["max_hidden"] = rows[i].max_hidden;
+        d["min_connections"] = rows[i].min_conns;
+        d["max_connections"] = rows[i].max_conns;
+        d["games"] = rows[i].games;
+        d["seconds"] = rows[i].seconds;
+        out.append(d);
+    }
+    std::free(rows);
+    return out;
+}
+
+void nd_bind_run(nb::module_ &m)
+{
+    m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"),
+          "duel_evolve COMMAND ARGS (run or resume) in this process: (exit status, what it wrote to stderr).");
+    m.def("read_dominance", &nd_dominance, nb::arg("directory"),
+          nb::sig("def read_dominance(directory: str) -> list[dict[str, typing.Any]]"),
+          "A run directory's dominance.csv, read and checked by duel_evolve's reader.");
+    m.def("read_generations", &nd_generations, nb::arg("directory"),
+          nb::sig("def read_generations(directory: str) -> list[dict[str, typing.Any]]"),
+          "A run directory's generations.csv (its checked fields), read by duel_evolve's reader.");
+}
