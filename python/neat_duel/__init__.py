@@ -11,7 +11,7 @@ package binds them. docs/python.md is the guide::
 """
 from __future__ import annotations
 
-from . import errors, gym, runs
+from . import deploy, errors, gym, runs
 from ._core import (
     Q15_ONE,
     VERSION,
@@ -61,6 +61,7 @@ __all__ = [
     "from_q15",
     "q15",
     "seed_derive",
+    "deploy",
     "errors",
     "gym",
     "runs",

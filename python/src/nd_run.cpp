@@ -23,9 +23,12 @@ extern "C" {
 // were; Ctrl-C stops the run after its generation in flight, as in the command, and is Python's again afterwards.
 static std::tuple<int, std::string> nd_duel_evolve(const std::string &command, const std::vector<std::string> &args)
 {
-    int (*cmd)(int, char **) = command == "run" ? duel_cmd_run : command == "resume" ? duel_cmd_resume : nullptr;
+    int (*cmd)(int, char **) = command == "run"      ? duel_cmd_run
+                               : command == "resume" ? duel_cmd_resume
+                               : command == "export" ? duel_cmd_export
+                                                     : nullptr;
     if (cmd == nullptr)
-        throw nd_error(NEAT_E_ARG, "command: 'run' or 'resume'");
+        throw nd_error(NEAT_E_ARG, "command: 'run', 'resume' or 'export'");
     std::vector<std::vector<char>> store;
     std::vector<char *> argv;
     for (const std::string &a : args) {
@@ -130,7 +133,7 @@ static nb::list nd_generations(const std::string &dir)
 void nd_bind_run(nb::module_ &m)
 {
     m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"),
-          "duel_evolve COMMAND ARGS (run or resume) in this process: (exit status, what it wrote to stderr).");
+          "duel_evolve COMMAND ARGS (run, resume or export) in this process: (exit status, what it wrote to stderr).");
     m.def("read_dominance", &nd_dominance, nb::arg("directory"),
           nb::sig("def read_dominance(directory: str) -> list[dict[str, typing.Any]]"),
           "A run directory's dominance.csv, read and checked by duel_evolve's reader.");
