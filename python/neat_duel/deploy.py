@@ -31,7 +31,7 @@ def export_c(net: Network, name: str, c_file: PathLike, *, header: PathLike | No
             args += ["--header", os.fspath(header)]
         if force:
             args.append("--force")
-        status, text = run_command("export", args)
+        status, _, text = run_command("export", args)
     if status != 0:
         lines = [x for x in text.splitlines() if x.strip()]
         raise RunError(lines[-1] if lines else f"duel_evolve export: exit status {status}", status, os.fspath(c_file))

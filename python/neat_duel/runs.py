@@ -13,6 +13,7 @@ docs/hardening.md), raised as RunError with its message::
 """
 from __future__ import annotations
 
+import json
 import os
 import pathlib
 import tempfile
@@ -71,13 +72,14 @@ class RunDir:
         return f"RunDir({str(self.path)!r})"
 
 
-def _call(command: str, args: list[str], path: str) -> None:
-    status, text = run_command(command, args)
+def _call(command: str, args: list[str], path: str, keep_stdout: bool = False) -> str:
+    status, out, text = run_command(command, args, keep_stdout)
     if status == 130:
         raise KeyboardInterrupt(text.strip() or "interrupted")
     if status != 0:
         lines = [x for x in text.splitlines() if x.strip()]
         raise RunError(lines[-1] if lines else f"duel_evolve {command}: exit status {status}", status, path)
+    return out
 
 
 def _options(generations: int | None, threads: int | None, sets: Iterable[str], quiet: bool) -> list[str]:
@@ -135,4 +137,53 @@ def resume(
     return RunDir(directory)
 
 
-__all__ = ["RunDir", "RunError", "run", "resume"]
+def ladder(
+    directory: PathLike,
+    *,
+    top: bool = False,
+    levels: tuple[int, int] | None = None,
+    against: Iterable[str] = (),
+) -> dict[str, Any]:
+    """duel_evolve ladder DIR --json: every dominant (or the top one, or levels L1..L2) against the built-in
+    strategies (or those named in against), 288 games each. The command's JSON as a dict: run, world, games,
+    against, levels (each with results per strategy, total_wins, total_losses)."""
+    args = [os.fspath(directory), "--json"]
+    if top:
+        args.append("--top")
+    if levels is not None:
+        args += ["--levels", f"{levels[0]}-{levels[1]}"]
+    names = list(against)
+    if names:
+        args += ["--against", ",".join(names)]
+    result: dict[str, Any] = json.loads(_call("ladder", args, os.fspath(directory), keep_stdout=True))
+    return result
+
+
+def compare(
+    candidates: Iterable[PathLike],
+    against: Iterable[PathLike],
+    *,
+    threads: int | None = None,
+    cache: PathLike | None = None,
+) -> dict[str, Any]:
+    """duel_evolve compare RUN... --against RUN...: the paper's performance measure, each candidate's top dominant
+    against every dominant of every ranking run (its comparisons cached as the command caches them). The
+    command's JSON summary and pairs as a dict."""
+    cand = [os.fspath(c) for c in candidates]
+    rank = [os.fspath(a) for a in against]
+    if not cand or not rank:
+        raise ValueError("compare: at least one candidate and one ranking run")
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "compare.json")
+        args = cand + ["--against"] + rank + ["--json", out]
+        if threads is not None:
+            args += ["--threads", str(threads)]
+        if cache is not None:
+            args += ["--cache", os.fspath(cache)]
+        _call("compare", args, cand[0], keep_stdout=True)
+        with open(out) as f:
+            result: dict[str, Any] = json.load(f)
+    return result
+
+
+__all__ = ["RunDir", "RunError", "run", "resume", "ladder", "compare"]

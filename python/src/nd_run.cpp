@@ -21,14 +21,29 @@ extern "C" {
 
 // The command's lines to stderr are kept (for the exception's message) and passed on to the real stderr as they
 // were; Ctrl-C stops the run after its generation in flight, as in the command, and is Python's again afterwards.
-static std::tuple<int, std::string> nd_duel_evolve(const std::string &command, const std::vector<std::string> &args)
+static std::string nd_take(FILE *f)
+{
+    std::string text;
+    std::rewind(f);
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0)
+        text.append(buf, n);
+    std::fclose(f);
+    return text;
+}
+
+static std::tuple<int, std::string, std::string> nd_duel_evolve(const std::string &command,
+                                                                const std::vector<std::string> &args, bool keep_stdout)
 {
     int (*cmd)(int, char **) = command == "run"      ? duel_cmd_run
                                : command == "resume" ? duel_cmd_resume
                                : command == "export" ? duel_cmd_export
+                               : command == "ladder" ? duel_cmd_ladder
+                               : command == "compare" ? duel_cmd_compare
                                                      : nullptr;
     if (cmd == nullptr)
-        throw nd_error(NEAT_E_ARG, "command: 'run', 'resume' or 'export'");
+        throw nd_error(NEAT_E_ARG, "command: 'run', 'resume', 'ladder', 'compare' or 'export'");
     std::vector<std::vector<char>> store;
     std::vector<char *> argv;
     for (const std::string &a : args) {
@@ -49,6 +64,19 @@ static std::tuple<int, std::string> nd_duel_evolve(const std::string &command, c
             close(saved);
         throw nd_error(NEAT_E_NOMEM, "cannot keep the run's messages (no temporary file)");
     }
+    // stdout kept too when asked (a command's --json): the rest of the time its lines go where Python's go
+    FILE *out = keep_stdout ? std::tmpfile() : nullptr;
+    int saved_out = keep_stdout ? dup(1) : -1;
+    if (keep_stdout && (out == nullptr || saved_out < 0 || dup2(fileno(out), 1) < 0)) {
+        dup2(saved, 2);
+        close(saved);
+        std::fclose(err);
+        if (out != nullptr)
+            std::fclose(out);
+        if (saved_out >= 0)
+            close(saved_out);
+        throw nd_error(NEAT_E_NOMEM, "cannot keep the command's output (no temporary file)");
+    }
     struct sigaction old_int, old_term;
     sigaction(SIGINT, nullptr, &old_int);
     sigaction(SIGTERM, nullptr, &old_term);
@@ -63,17 +91,17 @@ static std::tuple<int, std::string> nd_duel_evolve(const std::string &command, c
     sigaction(SIGTERM, &old_term, nullptr);
     dup2(saved, 2);
     close(saved);
-    std::string text;
-    std::rewind(err);
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, err)) > 0)
-        text.append(buf, n);
-    std::fclose(err);
+    std::string stdout_text;
+    if (keep_stdout) {
+        dup2(saved_out, 1);
+        close(saved_out);
+        stdout_text = nd_take(out);
+    }
+    std::string text = nd_take(err);
     if (!text.empty() && write(2, text.data(), text.size()) < 0) {
         // nowhere to say it
     }
-    return {rc, text};
+    return {rc, stdout_text, text};
 }
 
 static nb::list nd_dominance(const std::string &dir)
@@ -132,8 +160,9 @@ static nb::list nd_generations(const std::string &dir)
 
 void nd_bind_run(nb::module_ &m)
 {
-    m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"),
-          "duel_evolve COMMAND ARGS (run, resume or export) in this process: (exit status, what it wrote to stderr).");
+    m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"), nb::arg("keep_stdout") = false,
+          "duel_evolve COMMAND ARGS (run, resume, ladder, compare, export) in this process: (exit status, what it wrote\n"
+          "to stdout when keep_stdout, else '', what it wrote to stderr).");
     m.def("read_dominance", &nd_dominance, nb::arg("directory"),
           nb::sig("def read_dominance(directory: str) -> list[dict[str, typing.Any]]"),
           "A run directory's dominance.csv, read and checked by duel_evolve's reader.");

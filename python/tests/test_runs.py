@@ -1,6 +1,7 @@
 """duel_evolve's run and resume from Python: the same run directory, resumed across Python and the command."""
 from __future__ import annotations
 
+import json
 import pathlib
 import subprocess
 
@@ -50,7 +51,7 @@ def test_the_commands_refusals(tmp_path: pathlib.Path) -> None:
     with pytest.raises(runs.RunError, match="unknown"):
         runs.run(SMALL, tmp_path / "b", set=["nope=1"])
     # --record-champion-games needs LCM, which the package is built without: refused with one line
-    status, text = nd._core.run_command("resume", [str(tmp_path / "a"), "--generations", "2",
+    status, _, text = nd._core.run_command("resume", [str(tmp_path / "a"), "--generations", "2",
                                                     "--record-champion-games", "--quiet"])
     assert status != 0 and "needs a build with LCM" in text
     with pytest.raises(FileNotFoundError):
@@ -60,3 +61,24 @@ def test_the_commands_refusals(tmp_path: pathlib.Path) -> None:
     with pytest.raises(nd.FormatError, match="cut short"):
         runs.RunDir(tmp_path / "a").dominants()
 
+
+
+def test_ladder_and_compare_are_the_commands(tmp_path: pathlib.Path) -> None:
+    duel = program("DUEL_EVOLVE")
+    a = runs.run(SMALL, tmp_path / "a", generations=4)
+    b = runs.run(SMALL, tmp_path / "b", generations=4, seed=9)
+    lad = runs.ladder(a.path)
+    cli = subprocess.run([str(duel), "ladder", str(a.path), "--json"], capture_output=True, text=True, check=True)
+    assert lad == json.loads(cli.stdout)
+    assert [lv["level"] for lv in lad["levels"]] == [d["level"] for d in a.dominants()]
+    top = runs.ladder(a.path, top=True, against=["forager-hunter"])
+    assert len(top["levels"]) == 1 and top["against"] == ["forager-hunter"]
+    cmp = runs.compare([a.path], [b.path], threads=2, cache=tmp_path / "cache.csv")
+    subprocess.run([str(duel), "compare", str(a.path), "--against", str(b.path), "--json", str(tmp_path / "c.json"),
+                    "--cache", str(tmp_path / "cache2.csv")], check=True, capture_output=True)
+    want = json.loads((tmp_path / "c.json").read_text())
+    assert cmp == want and cmp["candidates"] and cmp["games_per_comparison"] == 288
+    with pytest.raises(runs.RunError):
+        runs.ladder(tmp_path / "none")
+    with pytest.raises(ValueError):
+        runs.compare([], [b.path])
