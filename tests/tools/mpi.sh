@@ -45,6 +45,23 @@ wait_gens() {
   while kill -0 "$2" 2>/dev/null && [ "$(cut -d, -f1 "$1/generations.csv" 2>/dev/null | sort -u | grep -c '^[0-9]')" -lt "$3" ]
   do sleep 0.05; done
 }
+# freeze NAME RANK DIR PATTERN ARGS...: duel_evolve ARGS on 3 ranks with a 2 s deadline base; once DIR has 3
+# generations, rank RANK stopped (SIGSTOP): the job must end within 60 s, not 0, with a line on NAME.err matching
+# PATTERN
+freeze() {
+  local name=$1 rank=$2 dir=$3 pattern=$4 job frozen start rc=0
+  shift 4
+  "${mpi[@]}" -np 3 -x DUEL_MPI_WAIT=2 "$duel" "$@" 2> "$name.err" & job=$!
+  wait_gens "$dir" $job 3
+  frozen=$(rank_pid "$rank" "$*")
+  kill -STOP "$frozen"
+  start=$SECONDS
+  wait $job || rc=$?
+  kill -9 "$frozen" 2>/dev/null || true
+  [ "$rc" -ne 0 ] || fail "$name: the job went on without the frozen rank $rank"
+  [ $((SECONDS - start)) -lt 60 ] || fail "$name: the job took $((SECONDS - start)) s to end"
+  grep -q "$pattern" "$name.err" || fail "$name: no line names the frozen rank $rank: $(cat "$name.err")"
+}
 # a tiny experiment: 2 methods, 3 runs; and one of 1 method, 2 runs (fewer runs than ranks: groups)
 cp -r "$(dirname "$plan")/../../configs" presets
 cat > plan.ini <<PLAN
@@ -128,32 +145,14 @@ faults)
   same_run ref K
   # a frozen rank (SIGSTOP) ends the job after its deadline (DUEL_MPI_WAIT s here, 60 s by default, plus 0.25 s
   # a game in flight), with a line naming it; it used to hold the job for ever
-  "${mpi[@]}" -np 3 -x DUEL_MPI_WAIT=2 "$duel" run --config "$cfg" --out F --generations 40 --quiet 2> f.err & job=$!
-  wait_gens F $job 3
-  frozen=$(rank_pid 1 "run --config $cfg --out F")
-  kill -STOP "$frozen"
-  start=$SECONDS rc=0
-  wait $job || rc=$?
-  kill -9 "$frozen" 2>/dev/null || true
-  [ "$rc" -ne 0 ] || fail "the job went on without the frozen rank"
-  [ $((SECONDS - start)) -lt 60 ] || fail "the job took $((SECONDS - start)) s to end"
-  grep -q "mpi: rank 1 has not answered for [0-9]* s (.* games in flight to it, at most [0-9]* s allowed): it is frozen" \
-    f.err || fail "no line names the frozen rank: $(cat f.err)"
+  freeze f 1 F "mpi: rank 1 has not answered for [0-9]* s (.* games in flight to it, at most [0-9]* s allowed): it is frozen" \
+    run --config "$cfg" --out F --generations 40 --quiet
   "$duel" resume F --quiet
   same_run ref F
   # a frozen rank 0: the others wait for its next chunk with no work in flight; its signs of life stop, and after
   # the deadline's base a waiting rank ends the job with a line naming it
-  "${mpi[@]}" -np 3 -x DUEL_MPI_WAIT=2 "$duel" run --config "$cfg" --out Z --generations 40 --quiet 2> z.err & job=$!
-  wait_gens Z $job 3
-  frozen=$(rank_pid 0 "run --config $cfg --out Z")
-  kill -STOP "$frozen"
-  start=$SECONDS rc=0
-  wait $job || rc=$?
-  kill -9 "$frozen" 2>/dev/null || true
-  [ "$rc" -ne 0 ] || fail "the job went on without the frozen rank 0"
-  [ $((SECONDS - start)) -lt 60 ] || fail "the job took $((SECONDS - start)) s to end"
-  grep -q "mpi: rank 0 (on .*) has given no sign of life for [0-9]* s (at most 2 s allowed) while rank [12] waits for a message from it: it is frozen" \
-    z.err || fail "no line names the frozen rank 0: $(cat z.err)"
+  freeze z 0 Z "mpi: rank 0 (on .*) has given no sign of life for [0-9]* s (at most 2 s allowed) while rank [12] waits for a message from it: it is frozen" \
+    run --config "$cfg" --out Z --generations 40 --quiet
   "$duel" resume Z --quiet
   same_run ref Z
   # Ctrl-C to mpirun: rank 0 finishes the generation, saves it and releases the others
@@ -175,17 +174,8 @@ faults)
   diff <(snapshot E1) <(snapshot EK) > snap.diff || fail "continued experiment: other files: $(head -5 snap.diff)"
   # an experiment with a rank frozen while it plays a whole run (no deadline from the run's work): rank 0 watches
   # its signs of life, ends the job after the deadline's base, and the experiment continues to the same files
-  "${mpi[@]}" -np 3 -x DUEL_MPI_WAIT=2 "$duel" experiment plan-one.ini --out EZ --quiet 2> ez.err & job=$!
-  wait_gens EZ/runs/complexify-2 $job 2
-  frozen=$(rank_pid 1 "experiment plan-one.ini --out EZ")
-  kill -STOP "$frozen"
-  start=$SECONDS rc=0
-  wait $job || rc=$?
-  kill -9 "$frozen" 2>/dev/null || true
-  [ "$rc" -ne 0 ] || fail "the experiment went on without the frozen rank"
-  [ $((SECONDS - start)) -lt 60 ] || fail "the experiment took $((SECONDS - start)) s to end"
-  grep -q "mpi: rank 1 (on .*) has given no sign of life for [0-9]* s (at most 2 s allowed) while rank 0 waits for the task it executes" \
-    ez.err || fail "no line names the frozen rank: $(cat ez.err)"
+  freeze ez 1 EZ/runs/complexify-2 "mpi: rank 1 (on .*) has given no sign of life for [0-9]* s (at most 2 s allowed) while rank 0 waits for the task it executes" \
+    experiment plan-one.ini --out EZ --quiet
   sleep 0.3 # rank 0's child (its own slot) dies with it
   "${mpi[@]}" -np 2 "$duel" experiment resume EZ --quiet
   diff <(snapshot E1) <(snapshot EZ) > snap.diff || fail "continued experiment (frozen rank): other files: $(head -5 snap.diff)"
