@@ -152,7 +152,20 @@ void nd_bind_params(nb::module_ &m)
     const neat_cfg_key *keys = neat_config_keys(&n);
     for (size_t i = 0; i < n; i++) {
         const neat_cfg_key *k = &keys[i];
-        std::string doc = std::string("[neat] ") + k->name + " (docs/parameters.md)";
+        // the key's type and range, from the table the INI reader checks with
+        char range[160];
+        switch (k->type) {
+        case NEAT_CFG_U32: std::snprintf(range, sizeof range, "an integer in [%.0f, %.0f]", k->min, k->max); break;
+        case NEAT_CFG_F64: std::snprintf(range, sizeof range, "a real in [%g, %g]", k->min, k->max); break;
+        case NEAT_CFG_BOOL: std::snprintf(range, sizeof range, "True or False (true or false in an INI file)"); break;
+        default: {
+            std::string names;
+            for (int j = 0; j <= (int)k->max; j++)
+                names += std::string(j ? ", " : "") + "'" + k->names[j] + "'";
+            std::snprintf(range, sizeof range, "one of %s", names.c_str());
+        }
+        }
+        std::string doc = std::string("[neat] ") + k->name + ": " + range + " (its meaning and source: docs/parameters.md)";
         switch (k->type) {
         case NEAT_CFG_U32:
             cls.def_prop_rw(k->name, [k](const nd_params &s) { return *(const uint32_t *)((const char *)&s.p + k->offset); },
