@@ -78,7 +78,7 @@ NEAT_API int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const
 /* A blob (neat_phenotype_load's, read from a file or sent by another
  * process) copied and loaded: the same network. 0, NEAT_E_NOMEM, or a
  * negative nrt_error - 100 (the runtime checks the blob before trusting a
- * byte of it). */
+ * byte of it; a NULL blob with len > 0 is NRT_E_ARG - 100). */
 NEAT_API int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len);
 
 /* double -> Q1.15, rounded to nearest, saturating to [-1, 1 - 2^-15] */

@@ -63,7 +63,10 @@ int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const neat_par
 
 int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len)
 {
-    int err = neat_phenotype_reserve(ph, len > 0 ? len : 1);
+    int err;
+    if (blob == NULL && len > 0) /* no bytes to copy, whatever the length says */
+        return NRT_E_ARG - 100;
+    err = neat_phenotype_reserve(ph, len > 0 ? len : 1);
     if (err)
         return err;
     if (len > 0) /* an empty blob (NULL allowed) is refused by the loader, never copied from */

@@ -153,6 +153,20 @@ static void test_net_step_param(void **state)
     neat_genome_free(&g, NULL);
 }
 
+/* A blob handed over by another process (tools/mpi): no bytes, or a length without bytes, is refused before
+ * anything is copied (found by fuzz_mpi_wire: a builtin's entry, blob NULL with its number as the length). */
+static void test_load_blob_without_bytes(void **state)
+{
+    neat_phenotype ph;
+    static const uint8_t none[1] = {0};
+    (void)state;
+    neat_phenotype_init(&ph, NULL);
+    assert_int_equal(neat_phenotype_load_blob(&ph, NULL, 4), NRT_E_ARG - 100);
+    assert_int_equal(neat_phenotype_load_blob(&ph, NULL, 0), NRT_E_TRUNCATED - 100);
+    assert_true(neat_phenotype_load_blob(&ph, none, 0) < 0);
+    neat_phenotype_free(&ph);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -162,6 +176,7 @@ int main(void)
         cmocka_unit_test(test_layout_must_match),
         cmocka_unit_test(test_too_many_nodes),
         cmocka_unit_test(test_net_step_param),
+        cmocka_unit_test(test_load_blob_without_bytes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
