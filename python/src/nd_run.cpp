@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 
 #include <unistd.h>
 
@@ -44,6 +45,13 @@ static std::tuple<int, std::string, std::string> nd_duel_evolve(const std::strin
                                                      : nullptr;
     if (cmd == nullptr)
         throw nd_error(NEAT_E_ARG, "command: 'run', 'resume', 'ladder', 'compare' or 'export'");
+    // the commands keep process-wide state (the stop flag, the run directory's lock, fds 1 and 2 redirected here):
+    // one at a time in a process, as in duel_evolve
+    static std::mutex one;
+    std::unique_lock<std::mutex> held(one, std::try_to_lock);
+    if (!held.owns_lock())
+        throw nd_error(NEAT_E_STATE, "duel_evolve " + command + ": another duel_evolve command runs in this process "
+                                     "(one at a time: use a process of its own for each, or play the games with Duel)");
     std::vector<std::vector<char>> store;
     std::vector<char *> argv;
     for (const std::string &a : args) {

@@ -82,3 +82,28 @@ def test_ladder_and_compare_are_the_commands(tmp_path: pathlib.Path) -> None:
         runs.ladder(tmp_path / "none")
     with pytest.raises(ValueError):
         runs.compare([], [b.path])
+
+
+def test_one_command_at_a_time(tmp_path: pathlib.Path) -> None:
+    import threading
+    import time
+
+    errors: list[BaseException] = []
+    long = tmp_path / "long"
+
+    def long_run() -> None:
+        try:
+            runs.run(SMALL, long, generations=60)
+        except BaseException as e:  # noqa: BLE001 - reported below
+            errors.append(e)
+
+    t = threading.Thread(target=long_run)
+    t.start()
+    while t.is_alive() and not (long / "generations.csv").exists():  # the run holds the command from here on
+        time.sleep(0.001)
+    # a second command while the first runs is refused at once (StateError), not run over it
+    with pytest.raises(nd.StateError, match="another duel_evolve command runs in this process"):
+        runs.ladder(long)
+    assert t.is_alive()  # (60 generations take seconds: the refusal above was made during the run)
+    t.join()
+    assert not errors and runs.RunDir(long).checkpoint().generation == 60
