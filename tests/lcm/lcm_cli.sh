@@ -32,6 +32,11 @@ start_hub() {
 
 blobs() { "$bench" --write-blobs "$tmp" > /dev/null; }
 
+# A step's answer, for the games that check states and not timing: generous, because on a busy machine (the
+# sanitized build, two suites at once) a node can stall for seconds (seen: 2 s was not enough once under ASan).
+# The checks of a silent controller set their own short timeout.
+step_ms=15000
+
 case "$what" in
 log)
   # one game, recorded as an LCM log: `log dump` prints `play --trace` byte for byte, `log info` the outcome
@@ -156,7 +161,7 @@ processes)
       "$duel" node controller "$tmp/$1.blob" --side west --lcm "$url" > "$tmp/cw.txt" 2>&1 & cw=$!
       "$duel" node controller "$tmp/$2.blob" --side east --lcm "$url" > "$tmp/ce.txt" 2>&1 & ce=$!
       pids+=("$cw" "$ce")
-      "$duel" node world --food "$food" --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms 2000 > "$tmp/world.txt" ||
+      "$duel" node world --food "$food" --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms $step_ms > "$tmp/world.txt" ||
         fail "world: $(cat "$tmp/world.txt")"
       wait "$cw" || fail "west controller: $(cat "$tmp/cw.txt")"
       wait "$ce" || fail "east controller: $(cat "$tmp/ce.txt")"
@@ -180,7 +185,7 @@ processes)
   "$duel" node controller "$tmp/champ.blob" --side west --lcm "$url" > "$tmp/cw.txt" 2>&1 & cw=$!
   "$duel" node controller "$tmp/net39a.blob" --side east --lcm "$url" > "$tmp/ce.txt" 2>&1 & ce=$!
   pids+=("$cw" "$ce")
-  "$duel" node world --food 17 --world "$tmp/world.ini" --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms 2000 \
+  "$duel" node world --food 17 --world "$tmp/world.ini" --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms $step_ms \
     > "$tmp/world.txt" || fail "world: $(cat "$tmp/world.txt")"
   wait "$cw" || fail "west controller: $(cat "$tmp/cw.txt")"
   wait "$ce" || fail "east controller: $(cat "$tmp/ce.txt")"
@@ -316,7 +321,7 @@ hostile-bus)
   "$duel" node controller "$tmp/net39a.blob" --side west --lcm "$url" > "$tmp/cw.txt" 2>&1 & cw=$!
   "$duel" node controller "$tmp/net202a.blob" --side east --lcm "$url" > "$tmp/ce.txt" 2>&1 & ce=$!
   pids+=("$cw" "$ce")
-  "$duel" node world --food 5 --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms 3000 --period-ms 2 \
+  "$duel" node world --food 5 --lcm "$url" --lcm-log "$tmp/w.lcm" --timeout-ms $step_ms --period-ms 2 \
     > "$tmp/world.txt" 2> "$tmp/world.err" || fail "world: $(cat "$tmp/world.txt" "$tmp/world.err")"
   wait "$cw" || fail "west controller: $(cat "$tmp/cw.txt")"
   wait "$ce" || fail "east controller: $(cat "$tmp/ce.txt")"
