@@ -13,8 +13,8 @@ import os
 import tempfile
 from typing import Union
 
-from ._core import Network, run_command
-from .runs import RunError
+from ._core import Network
+from .runs import _call
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -31,10 +31,7 @@ def export_c(net: Network, name: str, c_file: PathLike, *, header: PathLike | No
             args += ["--header", os.fspath(header)]
         if force:
             args.append("--force")
-        status, _, text = run_command("export", args)
-    if status != 0:
-        lines = [x for x in text.splitlines() if x.strip()]
-        raise RunError(lines[-1] if lines else f"duel_evolve export: exit status {status}", status, os.fspath(c_file))
+        _call("export", args, os.fspath(c_file))
 
 
 __all__ = ["export_c"]

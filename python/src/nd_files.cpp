@@ -1,5 +1,5 @@
-// nd_files.cpp - the package's file reads and writes: bounded reads of regular files, writes through a temporary
-// file, fsync and rename, so that an interrupted save never leaves half a file in place of a whole one.
+// nd_files.cpp - the package's file reads and writes: bounded reads of regular files, and writes through
+// duel_evolve's writer (duel_files.c), so that an interrupted save never leaves half a file in place of a whole one.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -11,6 +11,9 @@
 #include <nanobind/stl/string.h>
 
 #include "nd.h"
+extern "C" {
+#include "duel_files.h"
+}
 
 [[noreturn]] static void nd_os_error(const std::string &path, const char *what)
 {
@@ -22,41 +25,14 @@
 
 void nd_write_file(const std::string &path, const uint8_t *bytes, size_t len)
 {
-    // a name of its own beside path (mkstemp): no file of the user's is touched but path itself
-    std::vector<char> name(path.begin(), path.end());
-    static const char suffix[] = ".tmp-XXXXXX";
-    name.insert(name.end(), suffix, suffix + sizeof suffix);
-    int fd = mkstemp(name.data());
-    std::string tmp(name.data());
-    if (fd < 0)
-        nd_os_error(path, "cannot create a temporary file beside it");
-    fchmod(fd, 0644);
-    size_t done = 0;
-    bool ok = true;
+    // duel_evolve's one writer: a temporary file of its own beside path, fsync, rename, the directory synced
+    int r;
     {
         nb::gil_scoped_release nogil;
-        while (ok && done < len) {
-            ssize_t w = write(fd, bytes + done, len - done);
-            if (w < 0 && errno == EINTR)
-                continue;
-            ok = w > 0;
-            if (ok)
-                done += (size_t)w;
-        }
-        ok = ok && fsync(fd) == 0;
+        r = duel_file_replace(path.c_str(), bytes, len);
     }
-    int e = errno;
-    if (close(fd) != 0 && ok) {
-        ok = false;
-        e = errno;
-    }
-    if (!ok || rename(tmp.c_str(), path.c_str()) != 0) {
-        if (ok)
-            e = errno;
-        unlink(tmp.c_str());
-        errno = e;
+    if (r != 0)
         nd_os_error(path, "cannot write");
-    }
 }
 
 std::vector<uint8_t> nd_read_file(const std::string &path, size_t cap)
