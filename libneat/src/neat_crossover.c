@@ -9,46 +9,63 @@ static int neat_take(neat_genome *child, const neat_conn *c, double weight, int 
     return neat_genome_add_conn(child, c->in, c->out, weight, c->innov, enabled, a);
 }
 
-/* The child's nodes, from all nodes of both parents (pool, n): every
- * non-hidden node, and the hidden nodes its genes use. */
-static int neat_child_nodes(neat_genome *child, const neat_node *pool, uint32_t n, const neat_alloc *a)
+/* The child's nodes: the union of both parents' nodes (each list is sorted
+ * by id, so a merge; on a shared id mom's entry), before any gene, because
+ * add_conn checks that a gene's endpoints exist. */
+static int neat_union_nodes(neat_genome *child, const neat_genome *mom, const neat_genome *dad, const neat_alloc *a)
 {
-    uint32_t i, k;
-    int err = NEAT_OK;
-    for (i = 0; i < n && !err; i++) {
-        int used = pool[i].type != NEAT_NODE_HIDDEN;
-        for (k = 0; k < child->n_conns && !used; k++)
-            used = child->conns[k].in == pool[i].id || child->conns[k].out == pool[i].id;
-        if (used)
-            err = neat_genome_add_node(child, pool[i].id, pool[i].type, a);
+    uint32_t i = 0, j = 0, n = 0;
+    if (neat_mem_reserve(a, (void **)&child->nodes, &child->cap_nodes, mom->n_nodes + dad->n_nodes, sizeof(neat_node)))
+        return NEAT_E_NOMEM;
+    while (i < mom->n_nodes || j < dad->n_nodes) {
+        if (j >= dad->n_nodes || (i < mom->n_nodes && mom->nodes[i].id <= dad->nodes[j].id)) {
+            if (j < dad->n_nodes && dad->nodes[j].id == mom->nodes[i].id)
+                j++;
+            child->nodes[n++] = mom->nodes[i++];
+        } else {
+            child->nodes[n++] = dad->nodes[j++];
+        }
     }
-    return err;
+    child->n_nodes = n;
+    return NEAT_OK;
 }
 
+/* Then keeps, in place and in order, every non-hidden node and the hidden
+ * nodes the child's genes use. */
+static void neat_drop_unused(neat_genome *child)
+{
+    uint32_t i, k, n = 0;
+    for (i = 0; i < child->n_nodes; i++) {
+        uint32_t id = child->nodes[i].id;
+        int used = child->nodes[i].type != NEAT_NODE_HIDDEN;
+        for (k = 0; k < child->n_conns && !used; k++)
+            used = child->conns[k].in == id || child->conns[k].out == id;
+        if (used)
+            child->nodes[n++] = child->nodes[i];
+    }
+    child->n_nodes = n;
+}
+
+/* child is built in its own storage (kept from whatever it held before:
+ * the population reuses a generation's genomes), so it must be neither
+ * parent. */
 int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome *dad, int avg, const neat_params *p,
                    neat_rng *rng, const neat_alloc *a)
 {
     uint32_t i = 0, j = 0;
     int better; /* 0: mom, 1: dad, -1: equal fitness */
-    int err = NEAT_OK;
-    neat_genome tmp;
+    int err;
 
+    if (child == mom || child == dad)
+        return NEAT_E_ARG;
     child->n_nodes = 0;
     child->n_conns = 0;
     child->has_fitness = 0;
     child->fitness = 0;
+    child->species = 0;
     better = mom->fitness > dad->fitness ? 0 : (dad->fitness > mom->fitness ? 1 : -1);
 
-    /* Genes first (add_conn checks endpoints, so nodes go in a scratch pass):
-     * gather the genes into tmp with every node of both parents present. */
-    neat_genome_init(&tmp);
-    for (i = 0; i < mom->n_nodes && !err; i++)
-        err = neat_genome_add_node(&tmp, mom->nodes[i].id, mom->nodes[i].type, a);
-    for (i = 0; i < dad->n_nodes && !err; i++)
-        if (neat_genome_find_node(&tmp, dad->nodes[i].id) == NULL)
-            err = neat_genome_add_node(&tmp, dad->nodes[i].id, dad->nodes[i].type, a);
-
-    i = 0;
+    err = neat_union_nodes(child, mom, dad, a);
     while (!err && (i < mom->n_conns || j < dad->n_conns)) {
         if (i < mom->n_conns && j < dad->n_conns && mom->conns[i].innov == dad->conns[j].innov) {
             const neat_conn *cm = &mom->conns[i], *cd = &dad->conns[j];
@@ -57,7 +74,7 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
             int enabled = 1;
             if (!cm->enabled || !cd->enabled)
                 enabled = !(neat_rng_uniform(rng) < p->disable_prob);
-            err = neat_take(&tmp, pick, w, enabled, a);
+            err = neat_take(child, pick, w, enabled, a);
             i++;
             j++;
         } else {
@@ -66,7 +83,7 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
             const neat_conn *c = from_dad ? &dad->conns[j] : &mom->conns[i];
             int keep = better < 0 ? neat_rng_uniform(rng) < p->excess_equal_prob : better == from_dad;
             if (keep)
-                err = neat_take(&tmp, c, c->weight, c->enabled, a);
+                err = neat_take(child, c, c->weight, c->enabled, a);
             if (from_dad)
                 j++;
             else
@@ -74,23 +91,11 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
         }
     }
     if (!err) {
-        /* move the genes over, then the nodes they need */
-        neat_genome_free(child, a);
-        *child = tmp;
-        neat_genome_init(&tmp);
-        {
-            neat_node *all = child->nodes;
-            uint32_t n_all = child->n_nodes, cap_all = child->cap_nodes;
-            child->nodes = NULL;
-            child->n_nodes = child->cap_nodes = 0;
-            err = neat_child_nodes(child, all, n_all, a);
-            neat_mem_free(a, all, (size_t)cap_all * sizeof(neat_node));
-        }
+        neat_drop_unused(child);
         /* a union too large for the blob format: the fitter parent instead */
-        if (!err && child->n_nodes > p->max_nodes)
+        if (child->n_nodes > p->max_nodes)
             err = neat_genome_copy(child, better == 1 ? dad : mom, a);
     }
-    neat_genome_free(&tmp, a);
     child->has_fitness = 0;
     child->fitness = 0;
     return err;

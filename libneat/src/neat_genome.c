@@ -201,31 +201,28 @@ void neat_genome_randomize(neat_genome *g, neat_rng *rng, double range)
 
 double neat_genome_distance(const neat_genome *a, const neat_genome *b, const neat_params *p)
 {
-    uint32_t i = 0, j = 0, matching = 0, disjoint = 0, excess = 0;
+    const neat_conn *ca = a->conns, *cb = b->conns;
+    uint32_t i = 0, j = 0, na = a->n_conns, nb = b->n_conns, matching = 0, disjoint = 0, excess;
     double wdiff = 0.0, n = 1.0, w;
-    uint32_t max_a = a->n_conns ? a->conns[a->n_conns - 1].innov : 0;
-    uint32_t max_b = b->n_conns ? b->conns[b->n_conns - 1].innov : 0;
-    while (i < a->n_conns || j < b->n_conns) {
-        if (i < a->n_conns && j < b->n_conns && a->conns[i].innov == b->conns[j].innov) {
-            wdiff += fabs(a->conns[i].weight - b->conns[j].weight);
+    /* While both genomes have genes left, an unmatched gene lies below the
+     * other genome's next (so its last) innovation: disjoint. What is left
+     * after one genome runs out lies beyond its last innovation: excess. */
+    while (i < na && j < nb) {
+        uint32_t ia = ca[i].innov, ib = cb[j].innov;
+        if (ia == ib) {
+            wdiff += fabs(ca[i].weight - cb[j].weight);
             matching++;
             i++;
             j++;
-        } else if (j >= b->n_conns || (i < a->n_conns && a->conns[i].innov < b->conns[j].innov)) {
-            /* a's gene has no partner: excess if beyond b's last innovation */
-            if (b->n_conns == 0 || a->conns[i].innov > max_b)
-                excess++;
-            else
-                disjoint++;
-            i++;
         } else {
-            if (a->n_conns == 0 || b->conns[j].innov > max_a)
-                excess++;
+            disjoint++;
+            if (ia < ib)
+                i++;
             else
-                disjoint++;
-            j++;
+                j++;
         }
     }
+    excess = (na - i) + (nb - j);
     if (p->normalize_by_size) {
         n = (double)(a->n_conns > b->n_conns ? a->n_conns : b->n_conns);
         if (n < 1.0)

@@ -98,6 +98,9 @@ struct neat_pop {
     double delta_t;       /* the next speciation's threshold */
     double delta_t_used;  /* the threshold the current generation was speciated with */
     neat_genome *genomes; /* [p.pop_size] */
+    neat_genome *spare;   /* [p.pop_size] or NULL: the generation before, its
+                           * storage kept for the next (an epoch then
+                           * allocates only when a genome outgrows it) */
     neat_species *species;
     uint32_t n_species, cap_species;
     uint32_t next_species_id;

@@ -109,6 +109,7 @@ void neat_pop_free(neat_pop *pop)
         return;
     a = pop->a;
     neat_genomes_free(pop->genomes, pop->p.pop_size, &a);
+    neat_genomes_free(pop->spare, pop->p.pop_size, &a);
     for (k = 0; k < pop->n_species; k++)
         neat_species_free(&pop->species[k], &a);
     neat_mem_free(&a, pop->species, (size_t)pop->cap_species * sizeof(neat_species));
@@ -207,7 +208,9 @@ int neat_pop_epoch(neat_pop *pop)
         }
     }
     if (!err) {
-        next = neat_genomes_new(pop->p.pop_size, &pop->a);
+        /* every genome of next is written whole (copied or bred) before it is read */
+        next = pop->spare != NULL ? pop->spare : neat_genomes_new(pop->p.pop_size, &pop->a);
+        pop->spare = NULL;
         if (next == NULL)
             err = NEAT_E_NOMEM;
     }
@@ -218,7 +221,8 @@ int neat_pop_epoch(neat_pop *pop)
     if (!err)
         err = neat_speciate_plan(pop, next, &plan);
     if (err) {
-        neat_genomes_free(next, pop->p.pop_size, &pop->a);
+        if (next != NULL)
+            pop->spare = next; /* its storage, for the retry */
         neat_genome_free(&last, &pop->a);
         neat_genome_free(&ever, &pop->a);
         pop->rng = saved_rng;
@@ -243,7 +247,7 @@ int neat_pop_epoch(neat_pop *pop)
         pop->species[k].since_improved = pop->species[k].next_since;
         pop->species[k].age++;
     }
-    neat_genomes_free(pop->genomes, pop->p.pop_size, &pop->a);
+    pop->spare = pop->genomes;
     pop->genomes = next;
     neat_speciate_commit(pop, &plan);
     pop->generation++;
