@@ -23,11 +23,11 @@ static void neat_wr32(uint8_t *p, uint32_t v)
 }
 
 /* Runtime index of a node = its position in the genome: bias 0, inputs
- * 1..n_in, outputs next (neat_blob_write checks these ids), then hidden
- * nodes in id order. */
-static uint32_t neat_blob_index(const neat_genome *g, uint32_t id)
+ * 1..n_in, outputs next (ids equal to their positions: neat_blob_write
+ * checks these), then hidden nodes in id order. */
+static uint32_t neat_blob_index(const neat_genome *g, uint32_t n_io, uint32_t id)
 {
-    return (uint32_t)(neat_genome_find_node(g, id) - g->nodes);
+    return id < n_io ? id : (uint32_t)(neat_genome_find_node(g, id) - g->nodes);
 }
 
 static int32_t neat_quantize(double w)
@@ -48,19 +48,20 @@ int neat_blob_write(const neat_genome *g, uint32_t n_in, uint32_t n_out, uint8_t
 int neat_blob_write_step(const neat_genome *g, uint32_t n_in, uint32_t n_out, int net_step, uint8_t *buf, size_t cap,
                          size_t *len)
 {
-    uint32_t i, k, n = 0, n_hid, nodes;
+    uint32_t i, k, n = 0, n_hid, n_io = n_in + 1 + n_out, n_en;
     size_t size;
     uint32_t crc;
 
     if (g == NULL || buf == NULL || (net_step != NEAT_STEP_SYNC && net_step != NEAT_STEP_PROPAGATE))
         return NEAT_E_ARG;
-    n_hid = neat_genome_hidden_count(g);
-    nodes = n_in + 1 + n_out + n_hid;
-    if (nodes != g->n_nodes || !neat_genome_io_ok(g, n_in, n_out))
+    /* bias, inputs and outputs first with ids 0..n_io-1, every other node hidden */
+    if (!neat_genome_io_ok(g, n_in, n_out))
         return NEAT_E_ARG; /* n_in / n_out do not match the genome */
-    if (nodes > NRT_MAX_NODES || neat_genome_enabled_count(g) > 0xFFFF)
+    n_hid = g->n_nodes - n_io;
+    n_en = neat_genome_enabled_count(g);
+    if (g->n_nodes > NRT_MAX_NODES || n_en > 0xFFFF)
         return NEAT_E_TOOBIG;
-    size = neat_blob_size(g);
+    size = NRT_HEADER_SIZE + NRT_CONN_SIZE * (size_t)n_en;
     if (cap < size)
         return NEAT_E_ARG;
 
@@ -78,7 +79,7 @@ int neat_blob_write_step(const neat_genome *g, uint32_t n_in, uint32_t n_out, in
     neat_wr16(buf + NRT_OFF_INPUTS, n_in + 1);
     neat_wr16(buf + NRT_OFF_OUTPUTS, n_out);
     neat_wr16(buf + NRT_OFF_HIDDEN, n_hid);
-    neat_wr16(buf + NRT_OFF_CONNS, neat_genome_enabled_count(g));
+    neat_wr16(buf + NRT_OFF_CONNS, n_en);
     neat_wr32(buf + NRT_OFF_TOTAL_SIZE, (uint32_t)size);
     buf[NRT_OFF_WEIGHT_BITS] = NRT_WEIGHT_FRAC_BITS;
     buf[NRT_OFF_ACTIVATION] = NRT_ACT_SIGMOID49;
@@ -88,8 +89,8 @@ int neat_blob_write_step(const neat_genome *g, uint32_t n_in, uint32_t n_out, in
         uint8_t rec[4];
         if (!c->enabled)
             continue;
-        rec[0] = (uint8_t)neat_blob_index(g, c->in);
-        rec[1] = (uint8_t)neat_blob_index(g, c->out);
+        rec[0] = (uint8_t)neat_blob_index(g, n_io, c->in);
+        rec[1] = (uint8_t)neat_blob_index(g, n_io, c->out);
         neat_wr16(rec + 2, (uint32_t)neat_quantize(c->weight) & 0xFFFF);
         /* insertion into (target, source) order, which the runtime requires */
         for (k = n; k > 0; k--) {
