@@ -46,26 +46,37 @@ struct nd_genome {
     uint32_t n_inputs = 0, n_outputs = 0;
     int net_step = NEAT_STEP_SYNC;
     nd_genome() { neat_genome_init(&g); }
+    nd_genome(nd_genome &&o) noexcept : g(o.g), n_inputs(o.n_inputs), n_outputs(o.n_outputs), net_step(o.net_step)
+    {
+        neat_genome_init(&o.g);
+    }
     nd_genome(const nd_genome &) = delete;
     nd_genome &operator=(const nd_genome &) = delete;
     ~nd_genome() { neat_genome_free(&g, nullptr); }
 };
 
-// A network in the runtime (what a microcontroller runs), with its input and output buffers.
+// A network in the runtime (what a microcontroller runs), with its input and output buffers. Movable, so that a
+// network returned by value lives inside its Python object (one allocation fewer a network).
 struct nd_network {
     neat_phenotype ph;
-    std::vector<nrt_q15> in, out;
+    std::vector<nrt_q15> io; // the inputs (the bias first), then the outputs
     nd_network() { neat_phenotype_init(&ph, nullptr); }
+    nd_network(nd_network &&o) noexcept : ph(o.ph), io(std::move(o.io)) { neat_phenotype_init(&o.ph, &ph.alloc); }
     nd_network(const nd_network &) = delete;
     nd_network &operator=(const nd_network &) = delete;
     ~nd_network() { neat_phenotype_free(&ph); }
-    void sized(); // in and out sized to the loaded network
+    void sized(); // io sized to the loaded network
+    size_t n_in() const { return ph.net.n_inputs; } // the bias included
+    size_t n_out() const { return ph.net.n_outputs; }
+    nrt_q15 *in() { return io.data(); }
+    nrt_q15 *out() { return io.data() + ph.net.n_inputs; }
+    const nrt_q15 *out() const { return io.data() + ph.net.n_inputs; }
 };
 
-// A copy of g (shape and step mode from p) as a Python-owned nd_genome.
-nd_genome *nd_genome_copy(const neat_genome *g, const neat_params &p);
+// A copy of g (shape and step mode from p), returned by value: nb::cast moves it into its Python object.
+nd_genome nd_genome_copy(const neat_genome *g, const neat_params &p);
 // g's network, loaded (encoded exactly as evolution evaluates it).
-nd_network *nd_network_of(const nd_genome &g);
+nd_network nd_network_of(const nd_genome &g);
 // Writes bytes to path through a temporary file and a rename (never a half-written file); raises OSError.
 void nd_write_file(const std::string &path, const uint8_t *bytes, size_t len);
 // The whole regular file at path, at most cap bytes; raises OSError (or a format error for a larger file).

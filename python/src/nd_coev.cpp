@@ -231,8 +231,7 @@ void nd_bind_coev(nb::module_ &m)
                 const neat_pop *p = neat_coev_pop(nd_c(s), which == "A" ? 0 : 1);
                 std::vector<nb::object> v;
                 for (uint32_t i = 0; i < neat_pop_size(p); i++)
-                    v.push_back(nb::cast(nd_genome_copy(neat_pop_genome(p, i), *neat_pop_params(p)),
-                                         nb::rv_policy::take_ownership));
+                    v.push_back(nb::cast(nd_genome_copy(neat_pop_genome(p, i), *neat_pop_params(p))));
                 return v;
             }, nb::arg("which"), nb::sig("def population(self, which: str) -> list[Genome]"),
             "Copies of population 'A' or 'B''s genomes.")
@@ -240,8 +239,7 @@ void nd_bind_coev(nb::module_ &m)
                 const neat_genome *g = neat_coev_champion(nd_c(s));
                 if (g == nullptr)
                     return nb::none();
-                return nb::cast(nd_genome_copy(g, *neat_pop_params(neat_coev_pop(s.c, 0))),
-                                nb::rv_policy::take_ownership);
+                return nb::cast(nd_genome_copy(g, *neat_pop_params(neat_coev_pop(s.c, 0))));
             }, nb::sig("def champion(self) -> Genome | None"), "The last generation's champion (None before one).")
         .def("hall_of_fame", [](const nd_coev &s, const std::string &which) {
                 if (which != "A" && which != "B")
@@ -250,8 +248,7 @@ void nd_bind_coev(nb::module_ &m)
                 uint32_t w = which == "A" ? 0 : 1;
                 std::vector<nb::object> v;
                 for (uint32_t g = 0; g < neat_coev_hof_count(c, w); g++)
-                    v.push_back(nb::cast(nd_genome_copy(neat_coev_hof(c, w, g), *neat_pop_params(neat_coev_pop(c, 0))),
-                                         nb::rv_policy::take_ownership));
+                    v.push_back(nb::cast(nd_genome_copy(neat_coev_hof(c, w, g), *neat_pop_params(neat_coev_pop(c, 0)))));
                 return v;
             }, nb::arg("which"), nb::sig("def hall_of_fame(self, which: str) -> list[Genome]"),
             "The hall of fame of 'A' or 'B': its best of every generation, oldest first.")
@@ -266,8 +263,7 @@ void nd_bind_coev(nb::module_ &m)
                     r["level"] = k + 1;
                     r["generation"] = d.generation;
                     r["population"] = d.pop == 0 ? "A" : "B";
-                    r["genome"] = nb::cast(nd_genome_copy(d.genome, *neat_pop_params(neat_coev_pop(c, 0))),
-                                           nb::rv_policy::take_ownership);
+                    r["genome"] = nb::cast(nd_genome_copy(d.genome, *neat_pop_params(neat_coev_pop(c, 0))));
                     std::vector<uint32_t> w(d.wins, d.wins + d.n_beaten), l(d.losses, d.losses + d.n_beaten);
                     r["wins"] = w;
                     r["losses"] = l;

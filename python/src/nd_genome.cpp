@@ -15,17 +15,15 @@ static_assert(sizeof(neat_conn) == 24 && offsetof(neat_conn, weight) == 8 && off
 
 #define ND_GENOME_MAX (64u << 20) // a genome file of 256 nodes and every connection is far smaller
 
-nd_genome *nd_genome_copy(const neat_genome *g, const neat_params &p)
+nd_genome nd_genome_copy(const neat_genome *g, const neat_params &p)
 {
-    nd_genome *r = new nd_genome();
-    int err = neat_genome_copy(&r->g, g, nullptr);
-    if (err) {
-        delete r;
+    nd_genome r;
+    int err = neat_genome_copy(&r.g, g, nullptr);
+    if (err)
         nd_fail(err, "copying a genome");
-    }
-    r->n_inputs = p.n_inputs;
-    r->n_outputs = p.n_outputs;
-    r->net_step = p.net_step;
+    r.n_inputs = p.n_inputs;
+    r.n_outputs = p.n_outputs;
+    r.net_step = p.net_step;
     return r;
 }
 
@@ -55,19 +53,17 @@ static nd_genome *nd_genome_from_bytes(const uint8_t *b, size_t len, const std::
     return r;
 }
 
-nd_network *nd_network_of(const nd_genome &g)
+nd_network nd_network_of(const nd_genome &g)
 {
     neat_params p = neat_params_default();
     p.n_inputs = g.n_inputs;
     p.n_outputs = g.n_outputs;
     p.net_step = g.net_step;
-    nd_network *n = new nd_network();
-    int err = neat_phenotype_load(&n->ph, &g.g, &p);
-    if (err) {
-        delete n;
+    nd_network n;
+    int err = neat_phenotype_load(&n.ph, &g.g, &p);
+    if (err)
         nd_fail(err, "the genome's network");
-    }
-    n->sized();
+    n.sized();
     return n;
 }
 
@@ -130,7 +126,7 @@ void nd_bind_genome(nb::module_ &m)
                 return s.g.has_fitness ? nb::cast(s.g.fitness) : nb::none();
             }, nb::sig("def fitness(self) -> float | None"), "Its fitness, None before it was given one.")
         .def_prop_ro("species", [](const nd_genome &s) { return s.g.species; }, "The id of its species.")
-        .def("network", &nd_network_of, nb::rv_policy::take_ownership,
+        .def("network", &nd_network_of,
              "Its network in the runtime, encoded exactly as evolution evaluates it (and as a\n"
              "microcontroller runs it): step, settle, reset.")
         .def("distance", [](const nd_genome &a, const nd_genome &b, const nd_params &p) {

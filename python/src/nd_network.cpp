@@ -14,8 +14,7 @@ using in_q15 = nb::ndarray<const int16_t, nb::ndim<1>, nb::c_contig, nb::device:
 
 void nd_network::sized()
 {
-    in.assign(ph.net.n_inputs, 0);
-    out.assign(ph.net.n_outputs, 0);
+    io.assign((size_t)ph.net.n_inputs + ph.net.n_outputs, 0);
 }
 
 static nd_network *nd_network_from_blob(const uint8_t *b, size_t len, const std::string &name)
@@ -34,34 +33,34 @@ static nd_network *nd_network_from_blob(const uint8_t *b, size_t len, const std:
 // saturated to [-1, 1)).
 static void nd_inputs(nd_network &s, const in_f64 &x)
 {
-    size_t n = s.in.size() - 1;
+    size_t n = s.n_in() - 1;
     if (x.shape(0) != n)
         throw nd_error(NEAT_E_ARG, "inputs: " + std::to_string(x.shape(0)) + " values for a network of " +
                                        std::to_string(n) + " inputs (the bias is added here)");
     const double *v = x.data();
-    s.in[0] = NRT_ONE;
+    s.in()[0] = NRT_ONE;
     for (size_t i = 0; i < n; i++)
-        s.in[i + 1] = neat_q15(v[i]);
+        s.in()[i + 1] = neat_q15(v[i]);
 }
 
 // Inputs given as a list or tuple of numbers (the common case, read without numpy's help), or as a 1-D float64
 // array (any other array is converted by numpy).
 static void nd_inputs_any(nd_network &s, nb::handle x)
 {
-    size_t n = s.in.size() - 1;
+    size_t n = s.n_in() - 1;
     bool list = PyList_Check(x.ptr()), tuple = !list && PyTuple_Check(x.ptr());
     if (list || tuple) {
         Py_ssize_t len = list ? PyList_Size(x.ptr()) : PyTuple_Size(x.ptr());
         if ((size_t)len != n)
             throw nd_error(NEAT_E_ARG, "inputs: " + std::to_string(len) + " values for a network of " +
                                            std::to_string(n) + " inputs (the bias is added here)");
-        s.in[0] = NRT_ONE;
+        s.in()[0] = NRT_ONE;
         for (size_t i = 0; i < n; i++) {
             PyObject *v = list ? PyList_GetItem(x.ptr(), (Py_ssize_t)i) : PyTuple_GetItem(x.ptr(), (Py_ssize_t)i);
             double d = PyFloat_AsDouble(v);
             if (d == -1.0 && PyErr_Occurred())
                 throw nb::python_error();
-            s.in[i + 1] = neat_q15(d);
+            s.in()[i + 1] = neat_q15(d);
         }
         return;
     }
@@ -79,12 +78,12 @@ static void nd_inputs_any(nd_network &s, nb::handle x)
 // The outputs as a list of floats (what a fitness function indexes or sums; np.asarray makes an array of it).
 static nb::list nd_outputs(const nd_network &s)
 {
-    size_t n = s.out.size();
+    size_t n = s.n_out();
     PyObject *l = PyList_New((Py_ssize_t)n);
     if (l == nullptr)
         throw nb::python_error();
     for (size_t i = 0; i < n; i++)
-        PyList_SetItem(l, (Py_ssize_t)i, PyFloat_FromDouble(neat_from_q15(s.out[i])));
+        PyList_SetItem(l, (Py_ssize_t)i, PyFloat_FromDouble(neat_from_q15(s.out()[i])));
     return nb::steal<nb::list>(l);
 }
 
@@ -95,7 +94,7 @@ void nd_bind_network(nb::module_ &m)
                            "inputs in [-1, 1) without the bias (added here), outputs in [0, 1).")
         .def("step", [](nd_network &s, nb::handle x) {
                 nd_inputs_any(s, x);
-                nrt_step(&s.ph.net, s.in.data(), s.out.data());
+                nrt_step(&s.ph.net, s.in(), s.out());
                 return nd_outputs(s);
             }, nb::arg("inputs"),
             nb::sig("def step(self, inputs: collections.abc.Sequence[float] | numpy.typing.ArrayLike) -> list[float]"),
@@ -103,19 +102,19 @@ void nd_bind_network(nb::module_ &m)
             "n_inputs numbers; the outputs as a list of floats.")
         .def("step_into", [](nd_network &s, const in_f64 &x, out_f64 out) {
                 nd_inputs(s, x);
-                if (out.shape(0) != s.out.size())
+                if (out.shape(0) != s.n_out())
                     throw nd_error(NEAT_E_ARG, "out: " + std::to_string(out.shape(0)) + " values for " +
-                                                   std::to_string(s.out.size()) + " outputs");
-                nrt_step(&s.ph.net, s.in.data(), s.out.data());
+                                                   std::to_string(s.n_out()) + " outputs");
+                nrt_step(&s.ph.net, s.in(), s.out());
                 double *o = out.data();
-                for (size_t i = 0; i < s.out.size(); i++)
-                    o[i] = neat_from_q15(s.out[i]);
+                for (size_t i = 0; i < s.n_out(); i++)
+                    o[i] = neat_from_q15(s.out()[i]);
             }, nb::arg("inputs"), nb::arg("out"), "step, writing the outputs into out (no allocation).")
         .def("settle", [](nd_network &s, nb::handle x, int max_steps) {
                 nd_inputs_any(s, x);
                 if (max_steps < 0)
                     max_steps = s.ph.net.n_nodes + 1;
-                nrt_settle(&s.ph.net, s.in.data(), s.out.data(), max_steps);
+                nrt_settle(&s.ph.net, s.in(), s.out(), max_steps);
                 return nd_outputs(s);
             }, nb::arg("inputs"), nb::arg("max_steps") = -1,
             nb::sig("def settle(self, inputs: collections.abc.Sequence[float] | numpy.typing.ArrayLike, "
@@ -123,16 +122,16 @@ void nd_bind_network(nb::module_ &m)
             "Steps with the same inputs until no activation changes (a feed-forward task), at most\n"
             "max_steps times (default: its nodes + 1): the outputs.")
         .def("step_q15", [](nd_network &s, const in_q15 &x) {
-                size_t n = s.in.size();
+                size_t n = s.n_in();
                 if (x.shape(0) != n)
                     throw nd_error(NEAT_E_ARG, "inputs: " + std::to_string(x.shape(0)) + " values for " +
                                                    std::to_string(n) + " (bias included: the first is 32767)");
-                std::memcpy(s.in.data(), x.data(), n * sizeof(int16_t));
-                nrt_step(&s.ph.net, s.in.data(), s.out.data());
-                int16_t *o = new int16_t[s.out.size()];
-                std::memcpy(o, s.out.data(), s.out.size() * sizeof(int16_t));
+                std::memcpy(s.in(), x.data(), n * sizeof(int16_t));
+                nrt_step(&s.ph.net, s.in(), s.out());
+                int16_t *o = new int16_t[s.n_out()];
+                std::memcpy(o, s.out(), s.n_out() * sizeof(int16_t));
                 nb::capsule owner(o, [](void *p) noexcept { delete[] (int16_t *)p; });
-                size_t shape[1] = {s.out.size()};
+                size_t shape[1] = {s.n_out()};
                 return nb::ndarray<nb::numpy, int16_t, nb::ndim<1>>(o, 1, shape, owner);
             }, nb::arg("inputs"),
             "One step in the runtime's own numbers: Q1.15 inputs with the bias first (32767), Q1.15\n"

@@ -2,6 +2,7 @@
 // genome through a fitness callback or a whole generation at once through numpy (Networks), saved and loaded as
 // libneat checkpoints.
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 #include <nanobind/stl/string.h>
@@ -19,8 +20,45 @@ struct nd_population {
     ~nd_population() { neat_pop_free(pop); }
 };
 
+// One generation's network buffers, bump-allocated from a few large blocks and released together: a generation's
+// phenotypes cost a few allocations instead of two each (libneat's allocation hook, neat_alloc).
+struct nd_arena {
+    std::vector<uint8_t *> blocks;
+    size_t used = 0, cap = 0;
+    nd_arena() = default;
+    nd_arena(const nd_arena &) = delete;
+    nd_arena &operator=(const nd_arena &) = delete;
+    ~nd_arena()
+    {
+        for (uint8_t *b : blocks)
+            std::free(b);
+    }
+    static void *fn(void *ud, void *ptr, size_t old_size, size_t new_size)
+    {
+        nd_arena *a = (nd_arena *)ud;
+        if (new_size == 0)
+            return nullptr; // released with the arena
+        size_t need = (new_size + 15) & ~(size_t)15;
+        if (a->used + need > a->cap) {
+            size_t sz = need > ((size_t)64 << 10) ? need : ((size_t)64 << 10);
+            uint8_t *b = (uint8_t *)std::malloc(sz);
+            if (b == nullptr)
+                return nullptr;
+            a->blocks.push_back(b);
+            a->used = 0;
+            a->cap = sz;
+        }
+        uint8_t *r = a->blocks.back() + a->used;
+        a->used += need;
+        if (ptr != nullptr)
+            std::memcpy(r, ptr, old_size < new_size ? old_size : new_size);
+        return r;
+    }
+};
+
 // Every network of a generation, stepped together in C.
 struct nd_networks {
+    nd_arena arena; // declared first: destroyed after the phenotypes
     std::vector<neat_phenotype> ph;
     uint32_t n_in = 0, n_out = 0; // without the bias
     nd_networks() = default;
@@ -60,8 +98,11 @@ static nd_networks *nd_networks_of(const nd_population &s)
     b->n_in = p->n_inputs;
     b->n_out = p->n_outputs;
     b->ph.resize(n);
+    neat_alloc a;
+    a.fn = &nd_arena::fn;
+    a.ud = &b->arena;
     for (auto &ph : b->ph)
-        neat_phenotype_init(&ph, nullptr);
+        neat_phenotype_init(&ph, &a);
     for (uint32_t i = 0; i < n; i++) {
         int err = neat_phenotype_load(&b->ph[i], neat_pop_genome(pop, i), p);
         if (err) {
@@ -220,7 +261,7 @@ void nd_bind_population(nb::module_ &m)
                     throw nb::index_error(("genome " + std::to_string(i) + " of " +
                                            std::to_string(neat_pop_size(pop))).c_str());
                 return nd_genome_copy(neat_pop_genome(pop, i), *neat_pop_params(pop));
-            }, nb::arg("index"), nb::rv_policy::take_ownership, "A copy of genome index of this generation.")
+            }, nb::arg("index"), "A copy of genome index of this generation.")
         .def("set_fitness", [](nd_population &s, uint32_t i, double f) {
                 neat_pop *pop = nd_pop(s);
                 if (i >= neat_pop_size(pop))
@@ -265,7 +306,7 @@ void nd_bind_population(nb::module_ &m)
                     const neat_params *p = neat_pop_params(pop);
                     std::vector<double> fit(n);
                     for (uint32_t i = 0; i < n; i++) {
-                        nb::object g = nb::cast(nd_genome_copy(neat_pop_genome(pop, i), *p), nb::rv_policy::take_ownership);
+                        nb::object g = nb::cast(nd_genome_copy(neat_pop_genome(pop, i), *p));
                         nb::object r = fitness(g); // a raise goes through: the generation stays to be evaluated again
                         double f = 0.0;
                         if (!nb::try_cast<double>(r, f))
@@ -300,14 +341,14 @@ void nd_bind_population(nb::module_ &m)
                 const neat_genome *g = neat_pop_last_best(nd_pop(s));
                 if (g == nullptr)
                     return nb::none();
-                return nb::cast(nd_genome_copy(g, *neat_pop_params(s.pop)), nb::rv_policy::take_ownership);
+                return nb::cast(nd_genome_copy(g, *neat_pop_params(s.pop)));
             }, nb::sig("def last_best(self) -> Genome | None"),
             "The best genome of the last generation evaluated (None before the first epoch).")
         .def_prop_ro("best_ever", [](const nd_population &s) -> nb::object {
                 const neat_genome *g = neat_pop_best_ever(nd_pop(s));
                 if (g == nullptr)
                     return nb::none();
-                return nb::cast(nd_genome_copy(g, *neat_pop_params(s.pop)), nb::rv_policy::take_ownership);
+                return nb::cast(nd_genome_copy(g, *neat_pop_params(s.pop)));
             }, nb::sig("def best_ever(self) -> Genome | None"), "The best genome of every generation so far.")
         .def("species", [](const nd_population &s) {
                 neat_pop *pop = nd_pop(s);
