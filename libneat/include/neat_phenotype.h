@@ -81,7 +81,7 @@ NEAT_API int neat_phenotype_load(neat_phenotype *ph, const neat_genome *g, const
  * byte of it; a NULL blob with len > 0 is NRT_E_ARG - 100). */
 NEAT_API int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len);
 
-/* double -> Q1.15, rounded to nearest, saturating to [-1, 1 - 2^-15] */
+/* double -> Q1.15, rounded to nearest (halves up), saturating to [-1, 1 - 2^-15]; NaN -> 0 */
 NEAT_API nrt_q15 neat_q15(double x);
 /* Q1.15 -> double (exact) */
 NEAT_API double neat_from_q15(nrt_q15 q);

@@ -77,12 +77,21 @@ int neat_phenotype_load_blob(neat_phenotype *ph, const uint8_t *blob, size_t len
 
 nrt_q15 neat_q15(double x)
 {
-    double q = floor(x * 32768.0 + 0.5);
-    if (q > 32767.0)
-        q = 32767.0;
-    if (q < -32768.0)
-        q = -32768.0;
-    return (nrt_q15)q;
+    /* floor(y) saturated to [-32768, 32767], without the libm call (every
+     * input of every network step comes through here): for y in range, a
+     * conversion truncates toward zero, one less below zero gives the floor */
+    double y = x * 32768.0 + 0.5;
+    int32_t t;
+    if (y >= 32768.0)
+        return 32767;
+    if (y < -32768.0)
+        return -32768;
+    if (y != y)
+        return 0; /* NaN: before the conversion, which C leaves undefined for it */
+    t = (int32_t)y;
+    if ((double)t > y)
+        t--;
+    return (nrt_q15)t;
 }
 
 double neat_from_q15(nrt_q15 q)

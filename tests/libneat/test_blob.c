@@ -1,4 +1,5 @@
 /* test_blob.c - genome -> champion blob: size, quantisation, order, limits, and that the runtime accepts it. */
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -167,6 +168,32 @@ static void test_load_blob_without_bytes(void **state)
     neat_phenotype_free(&ph);
 }
 
+/* neat_q15 is floor(x * 32768 + 0.5) saturated to [-32768, 32767] (without
+ * libm's floor since it runs for every input): the definition, checked on
+ * the boundaries, the halves on both sides of zero and a sweep; NaN is 0. */
+static void test_q15_is_rounded_floor(void **state)
+{
+    static const double xs[] = {0.0, -0.0, 1.0, -1.0, 2.0, -2.0, 0.999984741, 0.99998, -0.99998, 1e300, -1e300,
+                                0.5 / 32768, -0.5 / 32768, 1.5 / 32768, -1.5 / 32768, -32767.5 / 32768,
+                                -32768.5 / 32768, 32766.5 / 32768, 32767.5 / 32768, 1e-20, -1e-20};
+    uint32_t i;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof xs / sizeof xs[0]; i++) {
+        double q = floor(xs[i] * 32768.0 + 0.5);
+        q = q > 32767.0 ? 32767.0 : (q < -32768.0 ? -32768.0 : q);
+        assert_int_equal(neat_q15(xs[i]), (int)q);
+    }
+    for (k = -70000; k <= 70000; k++) {
+        double x = k / 65536.0 + (k % 7) * 1e-7, q = floor(x * 32768.0 + 0.5);
+        q = q > 32767.0 ? 32767.0 : (q < -32768.0 ? -32768.0 : q);
+        assert_int_equal(neat_q15(x), (int)q);
+    }
+    assert_int_equal(neat_q15(NAN), 0);
+    assert_int_equal(neat_q15(INFINITY), 32767);
+    assert_int_equal(neat_q15(-INFINITY), -32768);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -177,6 +204,7 @@ int main(void)
         cmocka_unit_test(test_too_many_nodes),
         cmocka_unit_test(test_net_step_param),
         cmocka_unit_test(test_load_blob_without_bytes),
+        cmocka_unit_test(test_q15_is_rounded_floor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
