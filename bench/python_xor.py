@@ -5,7 +5,7 @@ Every figure is CPU time (user + sys) per evaluation, reproduction included, mea
 loop: neat_bench xor as a child, its CPU time), the methods interleaved, each repeated ROUNDS times; the median is
 reported, with every round. Also: Network.step with 39 connections (the duel's 12 inputs, 3 outputs, minimal).
 
-    python bench/python_xor.py [--rounds 3] [--neat-bench build/bin/neat_bench] [--json FILE]
+    python bench/python_xor.py [--rounds 5] [--neat-bench build/bin/neat_bench] [--json FILE]
 
 Needs neat_duel importable (pip install ., or PYTHONPATH=build/python) and neat-python (pip install neat-python).
 """
@@ -188,7 +188,7 @@ def step_cost() -> float:
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--neat-bench", default=str(ROOT / "build" / "bin" / "neat_bench"))
     ap.add_argument("--json", help="write the figures here too")
     a = ap.parse_args()
@@ -210,10 +210,19 @@ def main() -> int:
         print(f"  {k:22s} {med[k]:8.2f} us   rounds: {', '.join(f'{x:.2f}' for x in v)}")
     c = med["C loop (neat_bench)"]
     npy = med["neat-python"]
-    print(f"  neat-python / per genome: {npy / med['neat_duel per genome']:.1f}x (issue 41: at least 20)")
-    print(f"  neat-python / batched:    {npy / med['neat_duel batched']:.1f}x (at least 30)")
+
+    def paired(num: str, den: str) -> str:
+        # the ratio within each round (the methods ran back to back in it, under the same load), then the median
+        r = [a / b for a, b in zip(per_eval[num], per_eval[den])]
+        return f"{statistics.median(r):.1f}x, rounds {min(r):.1f}-{max(r):.1f}"
+
+    print("  ratios of the medians, and (in brackets) the median of each round's own ratio:")
+    print(f"  neat-python / per genome: {npy / med['neat_duel per genome']:.1f}x "
+          f"({paired('neat-python', 'neat_duel per genome')}; issue 41: at least 20)")
+    print(f"  neat-python / batched:    {npy / med['neat_duel batched']:.1f}x "
+          f"({paired('neat-python', 'neat_duel batched')}; at least 30)")
     print(f"  batched / C loop:         {med['neat_duel batched'] / c:.2f}x (at most 2)")
-    print(f"  neat-python / C loop:     {npy / c:.1f}x")
+    print(f"  neat-python / C loop:     {npy / c:.1f}x ({paired('neat-python', 'C loop (neat_bench)')})")
     print(f"Network.step, 39 connections, from Python: {statistics.median(step):.3f} us a call "
           f"(rounds: {', '.join(f'{x:.3f}' for x in step)}; at most 0.7)")
     if a.json:

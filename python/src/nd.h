@@ -40,19 +40,28 @@ std::string nd_strerror(int code);
 [[noreturn]] void nd_fail(int code, const std::string &what);
 
 // A genome of its own (a copy: what the population does next never changes it), with the shape and step mode its
-// network is built with.
+// network is built with. Inside Population.run's fitness call it borrows the population's genome instead of copying
+// it, and copies it only if the call keeps a reference when it returns (or asks for a numpy view): the copy most
+// evaluations never need.
 struct nd_genome {
     neat_genome g;
+    const neat_genome *borrowed = nullptr; // the population's genome, during one fitness call only
     uint32_t n_inputs = 0, n_outputs = 0;
     int net_step = NEAT_STEP_SYNC;
     nd_genome() { neat_genome_init(&g); }
-    nd_genome(nd_genome &&o) noexcept : g(o.g), n_inputs(o.n_inputs), n_outputs(o.n_outputs), net_step(o.net_step)
+    nd_genome(nd_genome &&o) noexcept
+        : g(o.g), borrowed(o.borrowed), n_inputs(o.n_inputs), n_outputs(o.n_outputs), net_step(o.net_step)
     {
         neat_genome_init(&o.g);
+        o.borrowed = nullptr;
     }
     nd_genome(const nd_genome &) = delete;
     nd_genome &operator=(const nd_genome &) = delete;
     ~nd_genome() { neat_genome_free(&g, nullptr); }
+    // Its genes, its own or borrowed.
+    const neat_genome &gen() const { return borrowed != nullptr ? *borrowed : g; }
+    // Makes borrowed genes its own (a copy); false if memory ran out (then it is left empty, never dangling).
+    bool own() noexcept;
 };
 
 // A network in the runtime (what a microcontroller runs), with its input and output buffers. Movable, so that a

@@ -187,7 +187,7 @@ void nd_bind_coev(nb::module_ &m)
                                                  " a count of wins against changing opponents is not an absolute "
                                                  "fitness, neat_coev.h)");
                 neat_start st;
-                st.genome = start != nullptr ? &start->g : nullptr;
+                st.genome = start != nullptr ? &start->gen() : nullptr;
                 st.keep_weights = 0;
                 int err = neat_coev_create(&self->c, &params.p, &cp, start != nullptr ? &st : nullptr, seed, nullptr);
                 if (err)

@@ -15,6 +15,18 @@ static_assert(sizeof(neat_conn) == 24 && offsetof(neat_conn, weight) == 8 && off
 
 #define ND_GENOME_MAX (64u << 20) // a genome file of 256 nodes and every connection is far smaller
 
+bool nd_genome::own() noexcept
+{
+    if (borrowed == nullptr)
+        return true;
+    const neat_genome *b = borrowed;
+    borrowed = nullptr;
+    if (neat_genome_copy(&g, b, nullptr) == NEAT_OK)
+        return true;
+    neat_genome_free(&g, nullptr);
+    return false;
+}
+
 nd_genome nd_genome_copy(const neat_genome *g, const neat_params &p)
 {
     nd_genome r;
@@ -60,7 +72,7 @@ nd_network nd_network_of(const nd_genome &g)
     p.n_outputs = g.n_outputs;
     p.net_step = g.net_step;
     nd_network n;
-    int err = neat_phenotype_load(&n.ph, &g.g, &p);
+    int err = neat_phenotype_load(&n.ph, &g.gen(), &p);
     if (err)
         nd_fail(err, "the genome's network");
     n.sized();
@@ -72,8 +84,8 @@ static std::string nd_dot(const nd_genome &s)
     // inputs at the bottom, outputs at the top; disabled genes dashed and grey; weights as labels and widths
     std::string d = "digraph genome {\n  rankdir=BT;\n  node [shape=circle, fontsize=10];\n";
     std::string ins = "  { rank=same;", outs = "  { rank=same;";
-    for (uint32_t i = 0; i < s.g.n_nodes; i++) {
-        const neat_node &n = s.g.nodes[i];
+    for (uint32_t i = 0; i < s.gen().n_nodes; i++) {
+        const neat_node &n = s.gen().nodes[i];
         std::string id = std::to_string(n.id);
         const char *shape = n.type == NEAT_NODE_BIAS ? "box" : n.type == NEAT_NODE_INPUT ? "invtriangle"
                           : n.type == NEAT_NODE_OUTPUT ? "doublecircle" : "circle";
@@ -85,8 +97,8 @@ static std::string nd_dot(const nd_genome &s)
             outs += " n" + id + ";";
     }
     d += ins + " }\n" + outs + " }\n";
-    for (uint32_t i = 0; i < s.g.n_conns; i++) {
-        const neat_conn &c = s.g.conns[i];
+    for (uint32_t i = 0; i < s.gen().n_conns; i++) {
+        const neat_conn &c = s.gen().conns[i];
         char w[64];
         std::snprintf(w, sizeof w, "%.3f", c.weight);
         double pen = 0.5 + (c.weight < 0 ? -c.weight : c.weight) / 2;
@@ -106,36 +118,40 @@ void nd_bind_genome(nb::module_ &m)
                           "species, the network it encodes, its file. A genome taken from a Population is a copy:\n"
                           "the population's next generation does not change it.")
         .def_prop_ro("nodes", [](nb::handle self) {
-                const nd_genome &s = nb::cast<const nd_genome &>(self);
-                return nd_view(s.g.nodes, s.g.n_nodes, sizeof(neat_node), self, "NODE");
+                nd_genome &s = nb::cast<nd_genome &>(self);
+                if (!s.own()) // a view outlives the fitness call that borrowed the genes
+                    throw std::bad_alloc();
+                return nd_view(s.gen().nodes, s.gen().n_nodes, sizeof(neat_node), self, "NODE");
             }, nb::sig("def nodes(self) -> numpy.typing.NDArray[numpy.void]"),
             "The nodes, sorted by id: a read-only structured array (id uint32, type uint8: 0 bias, 1 input,\n"
             "2 output, 3 hidden), a view of the genome's memory.")
         .def_prop_ro("conns", [](nb::handle self) {
-                const nd_genome &s = nb::cast<const nd_genome &>(self);
-                return nd_view(s.g.conns, s.g.n_conns, sizeof(neat_conn), self, "CONN");
+                nd_genome &s = nb::cast<nd_genome &>(self);
+                if (!s.own())
+                    throw std::bad_alloc();
+                return nd_view(s.gen().conns, s.gen().n_conns, sizeof(neat_conn), self, "CONN");
             }, nb::sig("def conns(self) -> numpy.typing.NDArray[numpy.void]"),
             "The connection genes, sorted by innovation number: a read-only structured array (in, out\n"
             "uint32 node ids; weight float64; innov uint32; enabled uint8), a view of the genome's memory.")
         .def_prop_ro("n_inputs", [](const nd_genome &s) { return s.n_inputs; }, "Inputs of its task, without the bias.")
         .def_prop_ro("n_outputs", [](const nd_genome &s) { return s.n_outputs; }, "Outputs of its task.")
-        .def_prop_ro("n_hidden", [](const nd_genome &s) { return neat_genome_hidden_count(&s.g); }, "Hidden nodes.")
-        .def_prop_ro("n_enabled", [](const nd_genome &s) { return neat_genome_enabled_count(&s.g); },
+        .def_prop_ro("n_hidden", [](const nd_genome &s) { return neat_genome_hidden_count(&s.gen()); }, "Hidden nodes.")
+        .def_prop_ro("n_enabled", [](const nd_genome &s) { return neat_genome_enabled_count(&s.gen()); },
                      "Enabled connections (those its network has).")
         .def_prop_ro("fitness", [](const nd_genome &s) -> nb::object {
-                return s.g.has_fitness ? nb::cast(s.g.fitness) : nb::none();
+                return s.gen().has_fitness ? nb::cast(s.gen().fitness) : nb::none();
             }, nb::sig("def fitness(self) -> float | None"), "Its fitness, None before it was given one.")
-        .def_prop_ro("species", [](const nd_genome &s) { return s.g.species; }, "The id of its species.")
+        .def_prop_ro("species", [](const nd_genome &s) { return s.gen().species; }, "The id of its species.")
         .def("network", &nd_network_of,
              "Its network in the runtime, encoded exactly as evolution evaluates it (and as a\n"
              "microcontroller runs it): step, settle, reset.")
         .def("distance", [](const nd_genome &a, const nd_genome &b, const nd_params &p) {
-                return neat_genome_distance(&a.g, &b.g, &p.p);
+                return neat_genome_distance(&a.gen(), &b.gen(), &p.p);
             }, nb::arg("other"), nb::arg("params"), "The compatibility distance delta under params' c1, c2, c3.")
         .def("to_bytes", [](const nd_genome &s) {
                 uint8_t *buf = nullptr;
                 size_t len = 0;
-                int err = neat_genome_save(&s.g, s.n_inputs, s.n_outputs, &buf, &len, nullptr);
+                int err = neat_genome_save(&s.gen(), s.n_inputs, s.n_outputs, &buf, &len, nullptr);
                 if (err)
                     nd_fail(err, "saving a genome");
                 nb::bytes b((const char *)buf, len);
@@ -145,7 +161,7 @@ void nd_bind_genome(nb::module_ &m)
         .def("save", [](const nd_genome &s, const std::string &path) {
                 uint8_t *buf = nullptr;
                 size_t len = 0;
-                int err = neat_genome_save(&s.g, s.n_inputs, s.n_outputs, &buf, &len, nullptr);
+                int err = neat_genome_save(&s.gen(), s.n_inputs, s.n_outputs, &buf, &len, nullptr);
                 if (err)
                     nd_fail(err, "saving a genome");
                 try {
@@ -171,9 +187,9 @@ void nd_bind_genome(nb::module_ &m)
         .def("to_dot", &nd_dot,
              "The network as Graphviz text (dot -Tsvg): inputs at the bottom, disabled genes dashed.")
         .def("__repr__", [](const nd_genome &s) {
-                std::string f = s.g.has_fitness ? std::to_string(s.g.fitness) : "None";
-                return "Genome(" + std::to_string(s.g.n_nodes) + " nodes, " + std::to_string(s.g.n_conns) +
-                       " connections (" + std::to_string(neat_genome_enabled_count(&s.g)) + " enabled), fitness " +
+                std::string f = s.gen().has_fitness ? std::to_string(s.gen().fitness) : "None";
+                return "Genome(" + std::to_string(s.gen().n_nodes) + " nodes, " + std::to_string(s.gen().n_conns) +
+                       " connections (" + std::to_string(neat_genome_enabled_count(&s.gen())) + " enabled), fitness " +
                        f + ")";
             });
 }

@@ -14,6 +14,7 @@
 
 struct nd_population {
     neat_pop *pop = nullptr;
+    bool running = false; // inside run(): its fitness calls borrow the genomes an epoch would free
     nd_population() = default;
     nd_population(const nd_population &) = delete;
     nd_population &operator=(const nd_population &) = delete;
@@ -80,6 +81,15 @@ static neat_pop *nd_pop(const nd_population &s)
     if (s.pop == nullptr)
         throw nd_error(NEAT_E_STATE, "the population is not there (a failed load)");
     return s.pop;
+}
+
+// For the calls that change the generation: refused while run() evaluates it.
+static neat_pop *nd_pop_idle(const nd_population &s, const char *what)
+{
+    if (s.running)
+        throw nd_error(NEAT_E_STATE, std::string(what) + ": not from inside run()'s fitness function (run() is " +
+                                         "evaluating this generation)");
+    return nd_pop(s);
 }
 
 static void nd_fitness_fail(int err, uint32_t i, double f)
@@ -225,7 +235,7 @@ void nd_bind_population(nb::module_ &m)
                             bool keep_weights) {
                 new (self) nd_population();
                 neat_start st;
-                st.genome = start != nullptr ? &start->g : nullptr;
+                st.genome = start != nullptr ? &start->gen() : nullptr;
                 st.keep_weights = keep_weights;
                 const char *field = nullptr;
                 if (neat_params_check(&params.p, &field) != NEAT_OK)
@@ -285,7 +295,7 @@ void nd_bind_population(nb::module_ &m)
                     neat_pop_set_fitness(pop, i, f.data()[i]);
             }, nb::arg("fitnesses"), "Every genome's fitness at once, from a float64 array.")
         .def("epoch", [](nd_population &s) {
-                neat_pop *pop = nd_pop(s);
+                neat_pop *pop = nd_pop_idle(s, "epoch");
                 int err = neat_pop_epoch(pop);
                 if (err == NEAT_E_FITNESS)
                     throw nd_error(err, "epoch: genome " + std::to_string(neat_pop_error_index(pop)) +
@@ -296,27 +306,56 @@ void nd_bind_population(nb::module_ &m)
         .def("networks", &nd_networks_of, nb::rv_policy::take_ownership,
              "Every genome's network of this generation, for batched evaluation in C.")
         .def("run", [](nd_population &s, nb::callable fitness, uint32_t generations, nb::object until) {
-                neat_pop *pop = nd_pop(s);
+                neat_pop *pop = nd_pop_idle(s, "run");
                 if (generations == 0)
                     throw nd_error(NEAT_E_ARG, "generations: at least 1");
+                // while a generation is evaluated its genomes are borrowed: an epoch (or a nested run) would free them
+                struct running_flag {
+                    bool &f;
+                    explicit running_flag(bool &x) : f(x) { f = true; }
+                    ~running_flag() { f = false; }
+                };
                 nb::list records;
                 uint64_t evaluations = 0;
                 for (uint32_t gen = 0; gen < generations; gen++) {
                     uint32_t n = neat_pop_size(pop);
                     const neat_params *p = neat_pop_params(pop);
                     std::vector<double> fit(n);
-                    for (uint32_t i = 0; i < n; i++) {
-                        nb::object g = nb::cast(nd_genome_copy(neat_pop_genome(pop, i), *p));
-                        nb::object r = fitness(g); // a raise goes through: the generation stays to be evaluated again
-                        double f = 0.0;
-                        if (!nb::try_cast<double>(r, f))
-                            throw nb::type_error(("the fitness of genome " + std::to_string(i) + " is " +
-                                                  nb::cast<std::string>(nb::repr(r)) + ", not a number").c_str());
-                        int err = neat_pop_set_fitness(pop, i, f);
-                        if (err)
-                            nd_fitness_fail(err, i, f);
-                        fit[i] = f;
-                        evaluations++;
+                    {
+                        running_flag flag(s.running);
+                        for (uint32_t i = 0; i < n; i++) {
+                            nb::object r;
+                            {
+                                nd_genome view;
+                                view.borrowed = neat_pop_genome(pop, i);
+                                view.n_inputs = p->n_inputs;
+                                view.n_outputs = p->n_outputs;
+                                view.net_step = p->net_step;
+                                nb::object g = nb::cast(std::move(view));
+                                // After the call (returned or raised), a genome still referenced gets its own copy,
+                                // made before its fitness is set: the object a copy would have been.
+                                struct unborrow {
+                                    nb::handle h;
+                                    ~unborrow()
+                                    {
+                                        nd_genome *ng = nb::inst_ptr<nd_genome>(h);
+                                        if (ng->borrowed != nullptr && Py_REFCNT(h.ptr()) > 1)
+                                            (void)ng->own(); // out of memory: left empty, never dangling
+                                        ng->borrowed = nullptr;
+                                    }
+                                } release{g};
+                                r = fitness(g); // a raise goes through: the generation stays to be evaluated again
+                            }
+                            double f = 0.0;
+                            if (!nb::try_cast<double>(r, f))
+                                throw nb::type_error(("the fitness of genome " + std::to_string(i) + " is " +
+                                                      nb::cast<std::string>(nb::repr(r)) + ", not a number").c_str());
+                            int err = neat_pop_set_fitness(pop, i, f);
+                            if (err)
+                                nd_fitness_fail(err, i, f);
+                            fit[i] = f;
+                            evaluations++;
+                        }
                     }
                     nb::dict rec = nd_record(pop, fit, evaluations);
                     int err = neat_pop_epoch(pop);

@@ -95,6 +95,69 @@ def test_a_raising_callback_stops_cleanly() -> None:
     assert pop.to_bytes() == ref.to_bytes()
 
 
+def test_genomes_kept_from_the_fitness_call_stay_whole() -> None:
+    """run() lends each genome to the fitness call and copies it only if the call keeps it: what was kept (the
+    genome, a numpy view of it, one held by a traceback) must equal what the call saw after later epochs."""
+    pop = nd.Population(xor_params(), seed=4)
+    kept: list[tuple[nd.Genome, bytes]] = []
+    views: list[tuple[np.ndarray, bytes]] = []
+
+    def keep(g: nd.Genome) -> float:
+        if len(kept) < 40 and pop.generation % 2 == 0:
+            kept.append((g, g.to_bytes()))
+        if len(views) < 40 and pop.generation % 2 == 1:
+            c = g.conns
+            views.append((c, c.tobytes()))
+        return xor_fitness(g)
+
+    pop.run(keep, 6)
+    assert len(kept) == 40 and len(views) == 40
+    for g, b in kept:
+        assert g.to_bytes() == b and g.fitness is None  # a copy taken before its fitness was set
+    for c, b in views:
+        assert c.tobytes() == b
+
+    caught: list[BaseException] = []
+
+    def boom(g: nd.Genome) -> float:
+        raise ValueError(g.to_bytes().hex()[:16])
+        return xor_fitness(g)
+
+    try:
+        pop.run(boom, 1)
+    except ValueError as e:
+        caught.append(e)
+    tb = caught[0].__traceback__
+    while tb is not None and tb.tb_frame.f_code.co_name != "boom":
+        tb = tb.tb_next
+    assert tb is not None
+    held = tb.tb_frame.f_locals["g"]
+    before = held.to_bytes()
+    pop.run(xor_fitness, 3)  # three epochs free and reuse the population's genomes
+    assert held.to_bytes() == before and before.hex()[:16] == str(caught[0])
+
+
+def test_no_epoch_from_inside_run() -> None:
+    pop = nd.Population(xor_params(), seed=6)
+    ref = nd.Population(xor_params(), seed=6)
+
+    def nested(g: nd.Genome) -> float:
+        pop.epoch()
+        return 1.0
+
+    def again(g: nd.Genome) -> float:
+        pop.run(xor_fitness, 1)
+        return 1.0
+
+    for f in (nested, again):
+        with pytest.raises(nd.StateError, match="not from inside run"):
+            pop.run(f, 2)
+        assert pop.generation == 0
+    pop.run(xor_fitness, 2, until=lambda r: pop.set_params(pop.params) is not None)  # set_params stays allowed
+    ref.run(xor_fitness, 2)
+    assert pop.to_bytes() == ref.to_bytes()
+
+
 @pytest.mark.parametrize("value", [float("nan"), float("inf"), -1.0])
 def test_bad_fitness(value: float) -> None:
     pop = nd.Population(xor_params(), seed=1)
