@@ -199,11 +199,22 @@ void neat_genome_randomize(neat_genome *g, neat_rng *rng, double range)
         g->conns[i].weight = (2.0 * neat_rng_uniform(rng) - 1.0) * range;
 }
 
-double neat_genome_distance(const neat_genome *a, const neat_genome *b, const neat_params *p)
+/* The compatibility distance, or stop as soon as the disjoint genes alone
+ * reach it. That early answer is exact for a caller asking "distance <
+ * stop?": every term of the sum is >= 0 (c1..c3 are, params_check says so)
+ * and rounding is monotone, so the term c2 * disjoint / n can only grow as
+ * more genes are counted, and the rounded sum of it with non-negative terms
+ * is at least it; once it is >= stop, the whole distance is too. */
+static double neat_distance(const neat_genome *a, const neat_genome *b, const neat_params *p, double stop)
 {
     const neat_conn *ca = a->conns, *cb = b->conns;
     uint32_t i = 0, j = 0, na = a->n_conns, nb = b->n_conns, matching = 0, disjoint = 0, excess;
     double wdiff = 0.0, n = 1.0, w;
+    if (p->normalize_by_size) {
+        n = (double)(na > nb ? na : nb);
+        if (n < 1.0)
+            n = 1.0;
+    }
     /* While both genomes have genes left, an unmatched gene lies below the
      * other genome's next (so its last) innovation: disjoint. What is left
      * after one genome runs out lies beyond its last innovation: excess. */
@@ -220,14 +231,21 @@ double neat_genome_distance(const neat_genome *a, const neat_genome *b, const ne
                 i++;
             else
                 j++;
+            if (p->c2 * disjoint / n >= stop)
+                return stop;
         }
     }
     excess = (na - i) + (nb - j);
-    if (p->normalize_by_size) {
-        n = (double)(a->n_conns > b->n_conns ? a->n_conns : b->n_conns);
-        if (n < 1.0)
-            n = 1.0;
-    }
     w = matching ? wdiff / matching : 0.0;
     return p->c1 * excess / n + p->c2 * disjoint / n + p->c3 * w;
+}
+
+double neat_genome_distance(const neat_genome *a, const neat_genome *b, const neat_params *p)
+{
+    return neat_distance(a, b, p, HUGE_VAL); /* never reached: the terms are finite */
+}
+
+int neat_genome_compatible(const neat_genome *a, const neat_genome *b, const neat_params *p, double delta_t)
+{
+    return neat_distance(a, b, p, delta_t) < delta_t;
 }

@@ -45,6 +45,9 @@ const neat_node *neat_genome_find_node(const neat_genome *g, uint32_t id);
 /* bias id 0, inputs 1..n_in, outputs next, all other nodes hidden */
 int neat_genome_io_ok(const neat_genome *g, uint32_t n_in, uint32_t n_out);
 int neat_genome_has_link(const neat_genome *g, uint32_t in, uint32_t out);
+/* neat_genome_distance(a, b, p) < delta_t, often without counting every
+ * gene (speciation asks it of each genome against every species) */
+int neat_genome_compatible(const neat_genome *a, const neat_genome *b, const neat_params *p, double delta_t);
 /* weights uniform in [-range, range] */
 void neat_genome_randomize(neat_genome *g, neat_rng *rng, double range);
 

@@ -47,11 +47,11 @@ int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *pla
         /* the first species (oldest first) whose representative is close
          * enough; the founders of this generation's new species come last */
         for (k = 0; k < ns; k++)
-            if (neat_genome_distance(&gs[i], &pop->species[k].rep, &pop->p) < pop->delta_t)
+            if (neat_genome_compatible(&gs[i], &pop->species[k].rep, &pop->p, pop->delta_t))
                 break;
         if (k == ns) {
             for (j = 0; j < plan->n_new; j++)
-                if (neat_genome_distance(&gs[i], &gs[plan->founder[j]], &pop->p) < pop->delta_t)
+                if (neat_genome_compatible(&gs[i], &gs[plan->founder[j]], &pop->p, pop->delta_t))
                     break;
             if (j == plan->n_new)
                 plan->founder[plan->n_new++] = i;

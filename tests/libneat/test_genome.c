@@ -448,6 +448,59 @@ static void test_distance_counts_disabled_genes(void **state)
     neat_genome_free(&b, NULL);
 }
 
+/* neat_genome_compatible (speciation's question, which may stop counting
+ * early) answers exactly distance < delta_t: random genome pairs,
+ * coefficients (zeros too), both normalisations, thresholds at, just
+ * around, below and above each distance, and NaN and infinity. */
+static void test_compatible_is_distance_below_threshold(void **state)
+{
+    neat_rng rng;
+    int trial;
+    (void)state;
+    neat_rng_seed(&rng, 41);
+    for (trial = 0; trial < 3000; trial++) {
+        uint32_t ia[30], ib[30], na = 0, nb = 0, k, t;
+        double wa[30], wb[30];
+        neat_genome a, b;
+        neat_params p = dist_params(neat_rng_below(&rng, 4) == 0 ? 0.0 : 3.0 * neat_rng_uniform(&rng),
+                                    neat_rng_below(&rng, 4) == 0 ? 0.0 : 3.0 * neat_rng_uniform(&rng),
+                                    neat_rng_below(&rng, 4) == 0 ? 0.0 : 3.0 * neat_rng_uniform(&rng),
+                                    (int)neat_rng_below(&rng, 2));
+        double d, th[9];
+        for (k = 0; k < 30; k++) {
+            if (neat_rng_below(&rng, 3) != 0) {
+                ia[na] = k;
+                wa[na++] = 6.0 * neat_rng_uniform(&rng) - 3.0;
+            }
+            if (neat_rng_below(&rng, 3) != 0) {
+                ib[nb] = k;
+                wb[nb++] = 6.0 * neat_rng_uniform(&rng) - 3.0;
+            }
+        }
+        na -= neat_rng_below(&rng, na + 1) / 2; /* some shorter, so excess genes too */
+        build_genes(&a, ia, wa, na);
+        build_genes(&b, ib, wb, nb);
+        d = neat_genome_distance(&a, &b, &p);
+        th[0] = d;
+        th[1] = nextafter(d, HUGE_VAL);
+        th[2] = nextafter(d, -HUGE_VAL);
+        th[3] = d * neat_rng_uniform(&rng);
+        th[4] = d + 1.0;
+        th[5] = NAN;
+        th[6] = HUGE_VAL;
+        th[7] = 0.5 * neat_rng_uniform(&rng);
+        th[8] = 3.0 * neat_rng_uniform(&rng);
+        for (t = 0; t < 9; t++) {
+            if (neat_genome_compatible(&a, &b, &p, th[t]) != (d < th[t]))
+                fail_msg("trial %d threshold %u: distance %.17g, threshold %.17g", trial, t, d, th[t]);
+            if (neat_genome_compatible(&b, &a, &p, th[t]) != (neat_genome_distance(&b, &a, &p) < th[t]))
+                fail_msg("trial %d threshold %u, swapped", trial, t);
+        }
+        neat_genome_free(&a, NULL);
+        neat_genome_free(&b, NULL);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -470,6 +523,7 @@ int main(void)
         cmocka_unit_test(test_distance_disjoint_only),
         cmocka_unit_test(test_distance_against_empty_genome),
         cmocka_unit_test(test_distance_counts_disabled_genes),
+        cmocka_unit_test(test_compatible_is_distance_below_threshold),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
