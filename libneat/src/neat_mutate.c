@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "neat_internal.h"
+#include "nrt.h"
 
 static double neat_clamp(double w, double max)
 {
@@ -48,12 +49,17 @@ static int neat_reaches(const neat_genome *g, uint32_t from, uint32_t to, uint32
 
 int neat_mutate_add_conn(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs *iv, const neat_alloc *a)
 {
-    uint32_t t, innov, *stack = NULL;
-    uint8_t *seen = NULL;
+    /* the cycle check's scratch: on the stack for any genome a blob can
+     * hold (256 nodes), allocated only for a larger one */
+    uint32_t t, innov, *stack = NULL, stack_here[NRT_MAX_NODES];
+    uint8_t *seen = NULL, seen_here[NRT_MAX_NODES];
     size_t stack_bytes = (size_t)g->n_nodes * sizeof(uint32_t);
-    int err = NEAT_OK;
+    int err = NEAT_OK, here = g->n_nodes <= NRT_MAX_NODES;
 
-    if (!p->allow_recurrent) {
+    if (!p->allow_recurrent && here) {
+        stack = stack_here;
+        seen = seen_here;
+    } else if (!p->allow_recurrent) {
         stack = (uint32_t *)neat_mem_realloc(a, NULL, 0, stack_bytes);
         seen = (uint8_t *)neat_mem_realloc(a, NULL, 0, g->n_nodes);
         if (stack == NULL || seen == NULL) {
@@ -77,8 +83,10 @@ int neat_mutate_add_conn(neat_genome *g, const neat_params *p, neat_rng *rng, ne
         break;
     }
 cleanup:
-    neat_mem_free(a, stack, stack_bytes);
-    neat_mem_free(a, seen, g->n_nodes);
+    if (!here) {
+        neat_mem_free(a, stack, stack_bytes);
+        neat_mem_free(a, seen, g->n_nodes);
+    }
     return err;
 }
 
