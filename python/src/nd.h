@@ -64,28 +64,34 @@ struct nd_genome {
     bool own() noexcept;
 };
 
-// A network in the runtime (what a microcontroller runs), with its input and output buffers. Movable, so that a
-// network returned by value lives inside its Python object (one allocation fewer a network).
+// A network in the runtime (what a microcontroller runs), with its input and output buffers. A small network's
+// buffers (its blob, the runtime's memory, the inputs and outputs) are carved from `local` (a genome's network
+// built in every evaluation then costs no allocation of its own); so the network never moves once loaded.
 struct nd_network {
+    static constexpr size_t local_size = 320; // an XOR or pole network, with room; larger ones use the heap
     neat_phenotype ph;
-    std::vector<nrt_q15> io; // the inputs (the bias first), then the outputs
-    nd_network() { neat_phenotype_init(&ph, nullptr); }
-    nd_network(nd_network &&o) noexcept : ph(o.ph), io(std::move(o.io)) { neat_phenotype_init(&o.ph, &ph.alloc); }
+    nrt_q15 *io = nullptr; // the inputs (the bias first), then the outputs
+    size_t local_used = 0;
+    alignas(16) uint8_t local[local_size];
+    nd_network();
     nd_network(const nd_network &) = delete;
     nd_network &operator=(const nd_network &) = delete;
-    ~nd_network() { neat_phenotype_free(&ph); }
+    ~nd_network();
     void sized(); // io sized to the loaded network
     size_t n_in() const { return ph.net.n_inputs; } // the bias included
     size_t n_out() const { return ph.net.n_outputs; }
-    nrt_q15 *in() { return io.data(); }
-    nrt_q15 *out() { return io.data() + ph.net.n_inputs; }
-    const nrt_q15 *out() const { return io.data() + ph.net.n_inputs; }
+    nrt_q15 *in() { return io; }
+    nrt_q15 *out() { return io + ph.net.n_inputs; }
+    const nrt_q15 *out() const { return io + ph.net.n_inputs; }
+    // libneat's allocation hook for ph: local while it lasts, then the heap
+    static void *alloc(void *ud, void *ptr, size_t old_size, size_t new_size);
+    bool is_local(const void *p) const { return (const uint8_t *)p >= local && (const uint8_t *)p < local + local_size; }
 };
 
 // A copy of g (shape and step mode from p), returned by value: nb::cast moves it into its Python object.
 nd_genome nd_genome_copy(const neat_genome *g, const neat_params &p);
-// g's network, loaded (encoded exactly as evolution evaluates it).
-nd_network nd_network_of(const nd_genome &g);
+// g's network, loaded (encoded exactly as evolution evaluates it), built in place in its Python object.
+nb::object nd_network_of(const nd_genome &g);
 // Writes bytes to path through a temporary file and a rename (never a half-written file); raises OSError.
 void nd_write_file(const std::string &path, const uint8_t *bytes, size_t len);
 // The whole regular file at path, at most cap bytes; raises OSError (or a format error for a larger file).

@@ -65,18 +65,27 @@ static nd_genome *nd_genome_from_bytes(const uint8_t *b, size_t len, const std::
     return r;
 }
 
-nd_network nd_network_of(const nd_genome &g)
+nb::object nd_network_of(const nd_genome &g)
 {
-    neat_params p = neat_params_default();
+    static const neat_params base = neat_params_default();
+    neat_params p = base;
     p.n_inputs = g.n_inputs;
     p.n_outputs = g.n_outputs;
     p.net_step = g.net_step;
-    nd_network n;
-    int err = neat_phenotype_load(&n.ph, &g.gen(), &p);
-    if (err)
-        nd_fail(err, "the genome's network");
-    n.sized();
-    return n;
+    // constructed where it stays (its buffers may be inside it), marked ready for Python only when loaded
+    nb::object o = nb::inst_alloc(nb::type<nd_network>());
+    nd_network *n = new (nb::inst_ptr<nd_network>(o)) nd_network();
+    int err = neat_phenotype_load(&n->ph, &g.gen(), &p);
+    try {
+        if (err)
+            nd_fail(err, "the genome's network");
+        n->sized();
+    } catch (...) {
+        n->~nd_network(); // a not-ready instance is freed without its destructor
+        throw;
+    }
+    nb::inst_mark_ready(o);
+    return o;
 }
 
 static std::string nd_dot(const nd_genome &s)
@@ -142,7 +151,7 @@ void nd_bind_genome(nb::module_ &m)
                 return s.gen().has_fitness ? nb::cast(s.gen().fitness) : nb::none();
             }, nb::sig("def fitness(self) -> float | None"), "Its fitness, None before it was given one.")
         .def_prop_ro("species", [](const nd_genome &s) { return s.gen().species; }, "The id of its species.")
-        .def("network", &nd_network_of,
+        .def("network", &nd_network_of, nb::sig("def network(self) -> Network"),
              "Its network in the runtime, encoded exactly as evolution evaluates it (and as a\n"
              "microcontroller runs it): step, settle, reset.")
         .def("distance", [](const nd_genome &a, const nd_genome &b, const nd_params &p) {

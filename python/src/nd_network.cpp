@@ -1,5 +1,6 @@
 // nd_network.cpp - neat_duel.Network: one network in the fixed-point runtime (the microcontroller's executor),
 // stepped from Python with float or Q1.15 values; its blob is exactly what a microcontroller loads.
+#include <cstdlib>
 #include <cstring>
 
 #include <nanobind/stl/string.h>
@@ -12,9 +13,55 @@ using in_f64 = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::
 using out_f64 = nb::ndarray<double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using in_q15 = nb::ndarray<const int16_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
+nd_network::nd_network()
+{
+    neat_alloc a;
+    a.fn = &nd_network::alloc;
+    a.ud = this;
+    neat_phenotype_init(&ph, &a);
+}
+
+nd_network::~nd_network()
+{
+    neat_phenotype_free(&ph);
+    if (io != nullptr && !is_local(io))
+        std::free(io);
+}
+
+void *nd_network::alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    nd_network *n = (nd_network *)ud;
+    if (new_size == 0) {
+        if (ptr != nullptr && !n->is_local(ptr))
+            std::free(ptr);
+        return nullptr;
+    }
+    if (ptr != nullptr && !n->is_local(ptr))
+        return std::realloc(ptr, new_size);
+    size_t need = (new_size + 15) & ~(size_t)15;
+    void *r;
+    if (n->local_used + need <= local_size) {
+        r = n->local + n->local_used;
+        n->local_used += need;
+    } else {
+        r = std::malloc(new_size);
+        if (r == nullptr)
+            return nullptr;
+    }
+    if (ptr != nullptr)
+        std::memcpy(r, ptr, old_size < new_size ? old_size : new_size);
+    return r;
+}
+
 void nd_network::sized()
 {
-    io.assign((size_t)ph.net.n_inputs + ph.net.n_outputs, 0);
+    size_t n = (size_t)ph.net.n_inputs + ph.net.n_outputs;
+    if (io != nullptr && !is_local(io))
+        std::free(io);
+    io = (nrt_q15 *)alloc(this, nullptr, 0, n * sizeof(nrt_q15));
+    if (io == nullptr)
+        throw std::bad_alloc();
+    std::memset(io, 0, n * sizeof(nrt_q15));
 }
 
 static nd_network *nd_network_from_blob(const uint8_t *b, size_t len, const std::string &name)
