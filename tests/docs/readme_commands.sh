@@ -107,7 +107,7 @@ reduce() { # reduce COMMAND: prints the command to run
   "bench/duel_instructions.sh"*) c="bench/duel_instructions.sh build 2" ;;
   "bench/generation_cost.sh "*) c=${c#bench/generation_cost.sh }; c="bench/generation_cost.sh build ${c#* }" ;;
   *"neat_bench pole"*) c="$c --runs 2" ;;
-  *"bench/python_xor.py"*) c="${c/--rounds 3/--rounds 1}" ;;
+  *"bench/python_xor.py"*) c="${c/--rounds 9/--rounds 1}" ;;
   esac
   echo "$c"
 }
