@@ -2,7 +2,9 @@
 # install.sh PYTHON SRC - the package as a user gets it: a wheel built from the source tree (pip's way for
 # `pip install .`), and an sdist made from it and built again; each installed apart from the build tree and used.
 # PYTHON is the test environment's (it has the build tools: python/requirements-test.txt), so nothing is
-# downloaded: --no-build-isolation.
+# downloaded: --no-build-isolation. The first build runs in a bare venv that has only what pyproject.toml's
+# [build-system].requires names (build_env.py), as pip's build isolation would give it: a build step needing
+# anything else fails here as it would for a user.
 set -euo pipefail
 py=$1 src=$2
 tmp=$(mktemp -d)
@@ -24,10 +26,21 @@ print("ok", nd.__version__, pkg)
 PY
   )
 }
-# 1. from the source tree, as `pip install .` does (its build directory kept out of the tree)
-"$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps -w "$tmp/w1" \
-  --config-settings=build-dir="$tmp/b1" "$src" || fail "pip wheel of the source tree"
-ls "$tmp"/w1/neat_duel-*.whl > /dev/null || fail "no wheel"
+# 1. from the source tree, as `pip install .` does (its build directory kept out of the tree), with only the
+#    declared build requirements
+"$py" -m venv --without-pip "$tmp/iso"
+iso_site=$("$tmp/iso/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+"$py" "$(dirname "$0")/build_env.py" "$src" "$iso_site" || fail "the build requirements are not all here"
+"$py" -m pip --python "$tmp/iso/bin/python" wheel -q --disable-pip-version-check --no-build-isolation --no-deps \
+  -w "$tmp/w1" --config-settings=build-dir="$tmp/b1" "$src" > "$tmp/w1.log" 2>&1 ||
+  { tail -40 "$tmp/w1.log"; fail "pip wheel of the source tree, with only [build-system].requires"; }
+wheel=$(ls "$tmp"/w1/neat_duel-*.whl) || fail "no wheel"
+# one abi3 wheel for CPython 3.12 and later (nanobind's stable ABI); a version's own wheel before 3.12
+case "$("$py" -c 'import sys; print(sys.version_info >= (3, 12))')" in
+  True) want=cp312-abi3 ;;
+  *) want=$("$py" -c 'import sys; print("cp%d%d-cp%d%d" % (sys.version_info[:2] * 2))') ;;
+esac
+case "$(basename "$wheel")" in *-"$want"-*) ;; *) fail "$(basename "$wheel"): not tagged $want" ;; esac
 "$py" -m pip install -q --disable-pip-version-check --no-deps --target "$tmp/i1" "$tmp"/w1/neat_duel-*.whl
 use "$tmp/i1"
 # 2. an sdist, then a wheel of it (what pip does with `pip install neat_duel-V.tar.gz`)
