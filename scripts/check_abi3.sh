@@ -3,7 +3,8 @@
 # Python 3.13) chroot in DIR (default /tmp/abi3-check) gets this checkout (its last commit), builds the wheel with
 # only the declared build requirements, checks it is the one cp312-abi3 wheel and uses it
 # (tests/python/install.sh), audits its symbols against the stable ABI (abi3audit) and runs the package's pytest
-# suite against it. Needs root, Debian's mirror and PyPI; about 2 minutes here. Not part of the test suite: it downloads a distribution.
+# suite against it. Needs root, Debian's mirror and PyPI; 92 s here. Not part of the test suite: it downloads
+# a distribution.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dir=${1:-/tmp/abi3-check}
