@@ -2,6 +2,7 @@
 // (the genome file format of docs/formats.md) and its Graphviz picture.
 #include <cstdlib>
 #include <cstring>
+#include <new>
 
 #include <nanobind/stl/string.h>
 

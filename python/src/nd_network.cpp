@@ -2,6 +2,7 @@
 // stepped from Python with float or Q1.15 values; its blob is exactly what a microcontroller loads.
 #include <cstdlib>
 #include <cstring>
+#include <new>
 
 #include <nanobind/stl/string.h>
 

@@ -375,7 +375,9 @@ void nd_bind_population(nb::module_ &m)
             "fitness. Returns one record per generation (generation, evaluations, best_fitness,\n"
             "mean_fitness, species, delta_t, best_hidden, best_connections, innovations): plain dicts,\n"
             "pandas.DataFrame(records) makes a table. A fitness that raises stops the run: the exception\n"
-            "goes through and the population stays in the generation it was evaluating.")
+            "goes through and the population stays in the generation it was evaluating. The genome given\n"
+            "to fitness is the population's own, lent (copied only if fitness keeps it); epoch() or run()\n"
+            "from inside fitness is a StateError.")
         .def_prop_ro("last_best", [](const nd_population &s) -> nb::object {
                 const neat_genome *g = neat_pop_last_best(nd_pop(s));
                 if (g == nullptr)
