@@ -315,7 +315,7 @@ static uint32_t neat_opponents(const neat_coev *c, uint32_t which, const neat_ge
     neat_rng_seed(&rng, neat_seed_derive(c->seed, keys, 3));
     if (c->generation == 0) {
         for (i = 0; i < c->cp.first_opponents; i++)
-            opp[n++] = neat_pop_genome(c->pop[other], neat_rng_below(&rng, size));
+            opp[n++] = neat_pop_genome(c->pop[other], neat_rng_below_inl(&rng, size));
         return n;
     }
     /* fewer species than wanted: the hall of fame fills the places */
@@ -323,7 +323,7 @@ static uint32_t neat_opponents(const neat_coev *c, uint32_t which, const neat_ge
     for (i = 0; i < ns; i++)
         opp[n++] = &c->champs[other].g[i];
     for (i = 0; i < c->cp.hof_opponents + (c->cp.species_opponents - ns); i++)
-        opp[n++] = &c->hof[other].g[neat_rng_below(&rng, c->hof[other].n)];
+        opp[n++] = &c->hof[other].g[neat_rng_below_inl(&rng, c->hof[other].n)];
     return n;
 }
 

@@ -69,11 +69,11 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
     while (!err && (i < mom->n_conns || j < dad->n_conns)) {
         if (i < mom->n_conns && j < dad->n_conns && mom->conns[i].innov == dad->conns[j].innov) {
             const neat_conn *cm = &mom->conns[i], *cd = &dad->conns[j];
-            const neat_conn *pick = neat_rng_uniform(rng) < 0.5 ? cm : cd;
+            const neat_conn *pick = neat_rng_uniform_inl(rng) < 0.5 ? cm : cd;
             double w = avg ? 0.5 * (cm->weight + cd->weight) : pick->weight;
             int enabled = 1;
             if (!cm->enabled || !cd->enabled)
-                enabled = !(neat_rng_uniform(rng) < p->disable_prob);
+                enabled = !(neat_rng_uniform_inl(rng) < p->disable_prob);
             err = neat_take(child, pick, w, enabled, a);
             i++;
             j++;
@@ -81,7 +81,7 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
             /* disjoint or excess: only the fitter parent's, at equal fitness either's, drawn by the PRNG */
             int from_dad = j < dad->n_conns && (i >= mom->n_conns || dad->conns[j].innov < mom->conns[i].innov);
             const neat_conn *c = from_dad ? &dad->conns[j] : &mom->conns[i];
-            int keep = better < 0 ? neat_rng_uniform(rng) < p->excess_equal_prob : better == from_dad;
+            int keep = better < 0 ? neat_rng_uniform_inl(rng) < p->excess_equal_prob : better == from_dad;
             if (keep)
                 err = neat_take(child, c, c->weight, c->enabled, a);
             if (from_dad)

@@ -196,7 +196,7 @@ void neat_genome_randomize(neat_genome *g, neat_rng *rng, double range)
 {
     uint32_t i;
     for (i = 0; i < g->n_conns; i++)
-        g->conns[i].weight = (2.0 * neat_rng_uniform(rng) - 1.0) * range;
+        g->conns[i].weight = (2.0 * neat_rng_uniform_inl(rng) - 1.0) * range;
 }
 
 /* The compatibility distance, or stop as soon as the disjoint genes alone

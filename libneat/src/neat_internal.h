@@ -150,4 +150,39 @@ void neat_apportion(neat_pop *pop, uint32_t *since_pop);
 /* the next generation into next[pop_size] (initialised genomes) */
 int neat_reproduce(neat_pop *pop, neat_genome *next);
 
+
+/* ---- the PRNG's draws, inline for libneat's modules: an epoch makes
+ * thousands, and the calls were 4 % of neat_bench xor's CPU. The public
+ * neat_rng_next, _uniform and _below (neat_rng.c) are these. ---- */
+static inline uint64_t neat_rng_next_inl(neat_rng *rng)
+{
+    uint64_t *s = rng->s;
+    uint64_t r = s[1] * 5;
+    uint64_t t = s[1] << 17;
+    r = (r << 7 | r >> 57) * 9; /* xoshiro256**: rotl(s[1] * 5, 7) * 9 */
+    s[2] ^= s[0];
+    s[3] ^= s[1];
+    s[1] ^= s[2];
+    s[0] ^= s[3];
+    s[2] ^= t;
+    s[3] = s[3] << 45 | s[3] >> 19;
+    return r;
+}
+
+/* uniform in [0, 1), 53 bits */
+static inline double neat_rng_uniform_inl(neat_rng *rng)
+{
+    return (double)(neat_rng_next_inl(rng) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* uniform in [0, n), n > 0: the top partial block rejected so every value is equally likely */
+static inline uint32_t neat_rng_below_inl(neat_rng *rng, uint32_t n)
+{
+    uint64_t limit = UINT64_MAX - (UINT64_MAX % n), x;
+    do
+        x = neat_rng_next_inl(rng);
+    while (x >= limit);
+    return (uint32_t)(x % n);
+}
+
 #endif /* NEAT_INTERNAL_H */

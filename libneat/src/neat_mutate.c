@@ -13,7 +13,7 @@ int neat_mutate_weights(neat_genome *g, const neat_params *p, neat_rng *rng)
 {
     uint32_t i;
     for (i = 0; i < g->n_conns; i++) {
-        double u = neat_rng_uniform(rng), r = 2.0 * neat_rng_uniform(rng) - 1.0;
+        double u = neat_rng_uniform_inl(rng), r = 2.0 * neat_rng_uniform_inl(rng) - 1.0;
         double *w = &g->conns[i].weight;
         if (u < p->weight_perturb_prob)
             *w = neat_clamp(*w + r * p->weight_perturb_power, p->weight_max);
@@ -68,8 +68,8 @@ int neat_mutate_add_conn(neat_genome *g, const neat_params *p, neat_rng *rng, ne
         }
     }
     for (t = 0; t < p->add_conn_tries; t++) {
-        const neat_node *src = &g->nodes[neat_rng_below(rng, g->n_nodes)];
-        const neat_node *dst = &g->nodes[neat_rng_below(rng, g->n_nodes)];
+        const neat_node *src = &g->nodes[neat_rng_below_inl(rng, g->n_nodes)];
+        const neat_node *dst = &g->nodes[neat_rng_below_inl(rng, g->n_nodes)];
         if (dst->type == NEAT_NODE_BIAS || dst->type == NEAT_NODE_INPUT)
             continue;
         if (neat_genome_has_link(g, src->id, dst->id))
@@ -78,7 +78,7 @@ int neat_mutate_add_conn(neat_genome *g, const neat_params *p, neat_rng *rng, ne
             continue;
         err = neat_innov_conn(iv, a, src->id, dst->id, &innov);
         if (!err)
-            err = neat_genome_add_conn(g, src->id, dst->id, (2.0 * neat_rng_uniform(rng) - 1.0) * p->weight_init_range,
+            err = neat_genome_add_conn(g, src->id, dst->id, (2.0 * neat_rng_uniform_inl(rng) - 1.0) * p->weight_init_range,
                                        innov, 1, a);
         break;
     }
@@ -101,7 +101,7 @@ int neat_mutate_add_node(neat_genome *g, const neat_params *p, neat_rng *rng, ne
         return NEAT_OK;
     /* as the C++ release: 20 tries for an enabled gene not leaving the bias */
     for (t = 0; t < 20; t++) {
-        k = neat_rng_below(rng, g->n_conns);
+        k = neat_rng_below_inl(rng, g->n_conns);
         if (g->conns[k].enabled && neat_genome_find_node(g, g->conns[k].in)->type != NEAT_NODE_BIAS)
             break;
     }
@@ -135,7 +135,7 @@ int neat_mutate_remove_conn(neat_genome *g, neat_rng *rng)
     uint32_t k, i, id, used;
     if (g->n_conns == 0)
         return NEAT_OK;
-    k = neat_rng_below(rng, g->n_conns);
+    k = neat_rng_below_inl(rng, g->n_conns);
     memmove(g->conns + k, g->conns + k + 1, (g->n_conns - k - 1) * sizeof(neat_conn));
     g->n_conns--;
     /* hidden nodes left without any connection gene go too */
@@ -162,19 +162,19 @@ int neat_mutate(neat_genome *g, const neat_params *p, neat_rng *rng, neat_innovs
      * weight mutation for that offspring (docs/parameters.md). */
     switch (p->mode) {
     case NEAT_MODE_COMPLEXIFY:
-        if (neat_rng_uniform(rng) < p->add_node_prob)
+        if (neat_rng_uniform_inl(rng) < p->add_node_prob)
             return neat_mutate_add_node(g, p, rng, iv, a);
-        if (neat_rng_uniform(rng) < p->add_conn_prob)
+        if (neat_rng_uniform_inl(rng) < p->add_conn_prob)
             return neat_mutate_add_conn(g, p, rng, iv, a);
         break;
     case NEAT_MODE_SIMPLIFY:
-        if (neat_rng_uniform(rng) < p->add_node_prob + p->add_conn_prob)
+        if (neat_rng_uniform_inl(rng) < p->add_node_prob + p->add_conn_prob)
             return neat_mutate_remove_conn(g, rng);
         break;
     default:
         break;
     }
-    if (neat_rng_uniform(rng) < p->weight_mut_prob)
+    if (neat_rng_uniform_inl(rng) < p->weight_mut_prob)
         return neat_mutate_weights(g, p, rng);
     return NEAT_OK;
 }

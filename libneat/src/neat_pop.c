@@ -203,7 +203,7 @@ int neat_pop_epoch(neat_pop *pop)
          * (a retry draws the same ones from the restored PRNG) */
         for (k = 0; k < pop->n_species && !err; k++) {
             neat_species *s = &pop->species[k];
-            err = neat_genome_copy(&s->rep, &pop->genomes[s->members[neat_rng_below(&pop->rng, s->n_members)]],
+            err = neat_genome_copy(&s->rep, &pop->genomes[s->members[neat_rng_below_inl(&pop->rng, s->n_members)]],
                                    &pop->a);
         }
     }

@@ -139,27 +139,27 @@ static int neat_breed_one(neat_pop *pop, uint32_t k, uint32_t parents, neat_geno
 {
     neat_species *s = &pop->species[k];
     const neat_params *p = &pop->p;
-    const neat_genome *mom = &pop->genomes[s->members[neat_rng_below(&pop->rng, parents)]];
+    const neat_genome *mom = &pop->genomes[s->members[neat_rng_below_inl(&pop->rng, parents)]];
     const neat_genome *dad;
     int err, avg;
 
-    if (parents == 1 || neat_rng_uniform(&pop->rng) < p->mutate_only_prob) {
+    if (parents == 1 || neat_rng_uniform_inl(&pop->rng) < p->mutate_only_prob) {
         err = neat_genome_copy(child, mom, &pop->a);
         child->has_fitness = 0;
         return err ? err : neat_mutate(child, p, &pop->rng, &pop->iv, &pop->a);
     }
-    if (pop->n_species > 1 && neat_rng_uniform(&pop->rng) < p->interspecies_prob) {
+    if (pop->n_species > 1 && neat_rng_uniform_inl(&pop->rng) < p->interspecies_prob) {
         /* another species' champion */
-        uint32_t k2 = neat_rng_below(&pop->rng, pop->n_species - 1);
+        uint32_t k2 = neat_rng_below_inl(&pop->rng, pop->n_species - 1);
         if (k2 >= k)
             k2++;
         dad = &pop->genomes[pop->species[k2].members[0]];
     } else {
-        dad = &pop->genomes[s->members[neat_rng_below(&pop->rng, parents)]];
+        dad = &pop->genomes[s->members[neat_rng_below_inl(&pop->rng, parents)]];
     }
-    avg = neat_rng_uniform(&pop->rng) < p->mate_avg_prob;
+    avg = neat_rng_uniform_inl(&pop->rng) < p->mate_avg_prob;
     err = neat_crossover(child, mom, dad, avg, p, &pop->rng, &pop->a);
-    if (!err && (dad == mom || !(neat_rng_uniform(&pop->rng) < p->mate_only_prob)))
+    if (!err && (dad == mom || !(neat_rng_uniform_inl(&pop->rng) < p->mate_only_prob)))
         err = neat_mutate(child, p, &pop->rng, &pop->iv, &pop->a);
     return err;
 }

@@ -1,5 +1,5 @@
 /* neat_rng.c - libneat's own PRNG (xoshiro256**, splitmix64 seeding) and per-game seed derivation. */
-#include "neat.h"
+#include "neat_internal.h"
 
 static uint64_t neat_splitmix64(uint64_t *x)
 {
@@ -9,11 +9,6 @@ static uint64_t neat_splitmix64(uint64_t *x)
     return z ^ (z >> 31);
 }
 
-static uint64_t neat_rotl(uint64_t x, int k)
-{
-    return (x << k) | (x >> (64 - k));
-}
-
 void neat_rng_seed(neat_rng *rng, uint64_t seed)
 {
     int i;
@@ -21,33 +16,20 @@ void neat_rng_seed(neat_rng *rng, uint64_t seed)
         rng->s[i] = neat_splitmix64(&seed);
 }
 
+/* xoshiro256**, its draws inline in neat_internal.h for libneat's own modules */
 uint64_t neat_rng_next(neat_rng *rng)
 {
-    uint64_t *s = rng->s;
-    uint64_t r = neat_rotl(s[1] * 5, 7) * 9;
-    uint64_t t = s[1] << 17;
-    s[2] ^= s[0];
-    s[3] ^= s[1];
-    s[1] ^= s[2];
-    s[0] ^= s[3];
-    s[2] ^= t;
-    s[3] = neat_rotl(s[3], 45);
-    return r;
+    return neat_rng_next_inl(rng);
 }
 
 double neat_rng_uniform(neat_rng *rng)
 {
-    return (double)(neat_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
+    return neat_rng_uniform_inl(rng);
 }
 
 uint32_t neat_rng_below(neat_rng *rng, uint32_t n)
 {
-    /* reject the top partial block so every value is equally likely */
-    uint64_t limit = UINT64_MAX - (UINT64_MAX % n), x;
-    do
-        x = neat_rng_next(rng);
-    while (x >= limit);
-    return (uint32_t)(x % n);
+    return neat_rng_below_inl(rng, n);
 }
 
 uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys)
