@@ -21,7 +21,7 @@ NB_MODULE(_core, m)
         }, nb::arg("base"), nb::arg("keys"),
         "The seed libneat derives from a base seed and a tuple of keys (neat_bench's run r: keys [r]).");
     m.def("q15", [](double x) { return (int)neat_q15(x); }, nb::arg("x"),
-          "A value as the runtime's Q1.15 (rounded to nearest, saturated to [-1, 1)).");
+          "A value as the runtime's Q1.15 (rounded to nearest, saturated to [-1, 1); NaN is 0).");
     m.def("from_q15", [](int q) {
             if (q < -32768 || q > 32767)
                 throw nd_error(NEAT_E_ARG, "from_q15: " + std::to_string(q) + " is not a Q1.15 value");

@@ -139,7 +139,8 @@ void nd_bind_network(nb::module_ &m)
 {
     nb::class_<nd_network>(m, "Network",
                            "A network in the runtime (Q1.15 fixed point, the same code a microcontroller runs):\n"
-                           "inputs in [-1, 1) without the bias (added here), outputs in [0, 1).")
+                           "inputs in [-1, 1) without the bias (added here; a value outside saturates, NaN is 0),\n"
+                           "outputs in [0, 1).")
         .def("step", [](nd_network &s, nb::handle x) {
                 nd_inputs_any(s, x);
                 nrt_step(&s.ph.net, s.in(), s.out());

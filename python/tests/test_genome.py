@@ -80,6 +80,11 @@ def test_network_steps() -> None:
     q = net.step_q15(np.array([nd.Q15_ONE, nd.q15(0.5), nd.q15(-0.25), nd.q15(1.0)], dtype=np.int16))
     assert q.dtype == np.int16 and len(q) == 2
     assert nd.from_q15(nd.q15(0.5)) == 0.5 and nd.q15(2.0) == 32767 and nd.q15(-3.0) == -32768
+    assert nd.q15(float("nan")) == 0 and nd.q15(float("inf")) == 32767  # defined, the same on every machine
+    net.reset()
+    b = net.step([0.0, -0.25, 1.0])
+    net.reset()
+    assert net.step([float("nan"), -0.25, 1.0]) == b
     with pytest.raises(nd.ArgumentError, match="2 values for a network of 3 inputs"):
         net.step([1.0, 2.0])
     with pytest.raises(TypeError):
