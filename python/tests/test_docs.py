@@ -1,6 +1,7 @@
 """docs/python.md and the README: every ```python block runs, in order, in one namespace (as a reader types them)."""
 from __future__ import annotations
 
+import importlib.util
 import os
 import pathlib
 import re
@@ -27,8 +28,17 @@ def test_the_guide_runs(doc: str, at_least: int, tmp_path: pathlib.Path, monkeyp
         os.symlink(ROOT / d, tmp_path / d)
     monkeypatch.chdir(tmp_path)
     ns: dict[str, object] = {"__name__": "__guide__"}
+    # the Gymnasium blocks need the optional extra (neat_duel[gym]; the test environment has it): without it they
+    # are left out, as test_gym skips, and the test says so once the others have run
+    no_gym = importlib.util.find_spec("gymnasium") is None
+    left_out = []
     for i, code in enumerate(found):
+        if no_gym and re.search(r"\bgym\b", code):
+            left_out.append(i + 1)
+            continue
         try:
             exec(compile(code, f"{doc} block {i + 1}", "exec"), ns)
         except Exception as e:  # name the block
             raise AssertionError(f"{doc}, python block {i + 1} fails: {e!r}\n{code}") from e
+    if left_out:
+        pytest.skip(f"gymnasium is not installed: {doc}'s python blocks {left_out} were not run (the others passed)")
