@@ -45,14 +45,20 @@ kill)
   echo "identical after $kills kill -9"
   ;;
 interrupt)
-  "$duel" run --config "$cfg" --out "$tmp/ref" --threads 2 --quiet
+  # 20 generations, and the interrupt once 2 are done (not after a fixed sleep: a faster build finished the
+  # whole run of 10 before a 0.5 s sleep ended)
+  "$duel" run --config "$cfg" --out "$tmp/ref" --threads 2 --quiet --generations 20
   rc=0
-  "$duel" run --config "$cfg" --out "$tmp/i" --threads 2 --quiet 2> "$tmp/err" & pid=$!
-  sleep 0.3
+  "$duel" run --config "$cfg" --out "$tmp/i" --threads 2 --quiet --generations 20 2> "$tmp/err" & pid=$!
+  for _ in $(seq 2000); do # generations.csv: a header, then a line per population and generation
+    [ "$(cat "$tmp/i/generations.csv" 2> /dev/null | wc -l)" -ge 5 ] && break
+    kill -0 "$pid" 2> /dev/null || break
+    sleep 0.01
+  done
   # one process per run directory
   expect_bad "is in use by another duel_evolve" resume "$tmp/i"
   # twice at once, as `timeout` delivers it (to the process and to its group): still the clean stop
-  sleep 0.2; kill -INT "$pid"; kill -INT "$pid"; wait "$pid" || rc=$?
+  kill -INT "$pid" 2> /dev/null || true; kill -INT "$pid" 2> /dev/null || true; wait "$pid" || rc=$?
   if [ "$rc" -eq 0 ]; then echo "the run finished before Ctrl-C: nothing tested"; exit 1; fi
   [ "$rc" -eq 130 ] || { echo "Ctrl-C: exit $rc, expected 130"; cat "$tmp/err"; exit 1; }
   grep -q "duel_evolve resume $tmp/i" "$tmp/err" || { echo "no resume hint: $(cat "$tmp/err")"; exit 1; }
