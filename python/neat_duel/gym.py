@@ -120,9 +120,11 @@ def fitness(
     """A fitness function for Population.run: evaluate's mean return plus offset (a fitness may not be negative:
     give an offset for environments whose returns can be)."""
     e = _make(env)
+    see = observe or default_observe(e)  # once, not again for every genome
+    do = act or default_act(e)
 
     def f(genome: Genome) -> float:
-        r = evaluate(genome, e, episodes=episodes, seed=seed, max_steps=max_steps, observe=observe, act=act) + offset
+        r = evaluate(genome, e, episodes=episodes, seed=seed, max_steps=max_steps, observe=see, act=do) + offset
         if r < 0:
             raise ValueError(f"a return of {r - offset} with offset {offset}: a fitness may not be negative")
         return r

@@ -112,6 +112,16 @@ static nd_ctrl nd_ctrl_of(nb::handle h, const char *which)
     return r;
 }
 
+// The two players of one game: two controllers, never one Network object twice (a game steps each side's own
+// activations).
+static void nd_ctrl_pair(nb::handle a, nb::handle b, nd_ctrl *ca, nd_ctrl *cb)
+{
+    *ca = nd_ctrl_of(a, "a");
+    *cb = nd_ctrl_of(b, "b");
+    if (ca->net != nullptr && ca->net == cb->net)
+        throw nd_error(NEAT_E_ARG, "a and b are the same Network object: load it twice");
+}
+
 static const duel_rules *nd_rules(nb::handle config)
 {
     if (config.is_none())
@@ -258,9 +268,8 @@ void nd_bind_duel(nb::module_ &m)
             return v;
         }, "The built-in strategies' names (docs/duel-world.md): idle, spinner, forager, hunter, forager-hunter.");
     m.def("duel_play", [](nb::handle a, nb::handle b, int food, bool a_west, nb::handle config) {
-            nd_ctrl ca = nd_ctrl_of(a, "a"), cb = nd_ctrl_of(b, "b");
-            if (ca.net != nullptr && ca.net == cb.net)
-                throw nd_error(NEAT_E_ARG, "a and b are the same Network object: load it twice");
+            nd_ctrl ca, cb;
+            nd_ctrl_pair(a, b, &ca, &cb);
             if (food < DUEL_TRAINING || food >= DUEL_CONFIGS)
                 throw nd_error(NEAT_E_ARG, "food: -1 (the training items) or a comparison layout 0..143");
             duel_result res;
@@ -291,9 +300,8 @@ void nd_bind_duel(nb::module_ &m)
         "('west', 'east', 'draw', 'timeout'), steps, energy and food eaten of (a, b). Networks are reset\n"
         "first.");
     m.def("duel_compare", [](nb::handle a, nb::handle b, nb::handle config) {
-            nd_ctrl ca = nd_ctrl_of(a, "a"), cb = nd_ctrl_of(b, "b");
-            if (ca.net != nullptr && ca.net == cb.net)
-                throw nd_error(NEAT_E_ARG, "a and b are the same Network object: load it twice");
+            nd_ctrl ca, cb;
+            nd_ctrl_pair(a, b, &ca, &cb);
             duel_tally t;
             std::memset(&t, 0, sizeof t);
             const duel_rules *rules = nd_rules(config);
