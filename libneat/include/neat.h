@@ -33,7 +33,8 @@ extern "C" {
 /* the library's version: the project's (neat_duel_version.h) */
 #define NEAT_VERSION_MAJOR NEAT_DUEL_VERSION_MAJOR
 #define NEAT_VERSION_MINOR NEAT_DUEL_VERSION_MINOR
-#define NEAT_CHECKPOINT_VERSION 3 /* checkpoint format, apart from the code (version 2 still loads) */
+#define NEAT_CHECKPOINT_VERSION 4 /* checkpoint format, apart from the code (versions 2 and 3 still load; a
+                                   * population using none of NEAT C++'s switches is written as version 3) */
 #define NEAT_GENOME_FILE_VERSION 1 /* genome file format (neat_genome_save) */
 #define NEAT_GENOME_FILE_MAGIC "NEATGENM" /* its first 8 bytes */
 
@@ -110,10 +111,60 @@ enum neat_stagnation {
      * dropoff_age generations gets no offspring */
     NEAT_STAGNATION_OLDEST_WORST = 0,
     /* 2002 paper: a species whose best fitness has not improved for
-     * dropoff_age generations breeds no more (stagnation_factor 0; the C++
-     * release multiplies its share by 0.01 instead) */
-    NEAT_STAGNATION_IMPROVEMENT = 1
+     * dropoff_age generations breeds no more (stagnation_factor 0), or
+     * breeds at stagnation_factor times its share */
+    NEAT_STAGNATION_IMPROVEMENT = 1,
+    /* NEAT C++ 1.2.1 (Species::adjust_fitness, Population::epoch): every
+     * cull_every-th generation one species at least cull_age old is culled
+     * for good, and a culled species, or one whose best has not risen for
+     * dropoff_age - 1 generations, has its fitness times 0.01 */
+    NEAT_STAGNATION_CPP = 2
 };
+
+/* ---- NEAT C++ 1.2.1's own rules (docs/parameters.md, "NEAT C++ 1.2.1") --
+ * Where Kenneth Stanley's release differs from the paper's text, libneat
+ * follows the text by default (each switch 0) and offers the release's rule
+ * (each switch 1). neat_params_neat_cpp() sets them all. */
+enum neat_profile {
+    NEAT_PROFILE_DEFAULT = 0, /* the paper's text (Appendix A) where it speaks */
+    NEAT_PROFILE_NEAT_CPP = 1 /* NEAT C++ 1.2.1, the authors' release */
+};
+/* equal_fitness_rule: a crossover of parents of equal fitness */
+enum { NEAT_EQUAL_RANDOM = 0,  /* each unmatched gene of either parent kept with excess_equal_prob */
+       NEAT_EQUAL_SMALLER = 1  /* the parent with fewer genes counts as the fitter (the second on a tie) */ };
+/* reenable_rule: a matching gene disabled in either parent */
+enum { NEAT_REENABLE_PAPER = 0, /* enabled unless disable_prob says disabled */
+       NEAT_REENABLE_CPP = 1    /* multipoint crossover keeps the chosen gene's flag unless disable_prob disables it */ };
+/* add_conn_rule: how a new connection is sought */
+enum { NEAT_ADD_CONN_ANY = 0,  /* any pair (any target but the bias and inputs) */
+       NEAT_ADD_CONN_CPP = 1   /* a loop-closing link with recur_only_prob, else a loop-free one; targets drawn from
+                                * outputs and hidden nodes; an innovation repeated in a generation reuses its weight */ };
+/* species_rep: what a genome of the next generation is compared with */
+enum { NEAT_REP_RANDOM = 0, NEAT_REP_CHAMPION = 1 };
+/* weight_mut_rule */
+enum { NEAT_WEIGHTS_UNIFORM = 0, /* each weight perturbed with weight_perturb_prob, else replaced */
+       NEAT_WEIGHTS_CPP = 1      /* a "severe" coin per genome, the newest 20 % of the genes apart (see docs) */ };
+/* elitism_rule: the champion is copied when the species has more than elitism_min_size ... */
+enum { NEAT_ELITE_BY_SIZE = 0, /* ... members */
+       NEAT_ELITE_BY_OFFSPRING = 1 /* ... offspring due */ };
+/* interspecies_rule: the other parent of an interspecies crossover */
+enum { NEAT_INTER_UNIFORM = 0, /* another species' champion, uniformly */
+       NEAT_INTER_CPP = 1      /* a species drawn from a normal toward the best (5 tries), else its own champion */ };
+/* identical_rule: a crossover child is always mutated when its parents are ... */
+enum { NEAT_IDENTICAL_SAME = 0, /* ... the same genome */
+       NEAT_IDENTICAL_EQUAL = 1 /* ... the same genome or at distance 0 */ };
+/* offspring_rounding */
+enum { NEAT_ROUND_REMAINDER = 0, /* largest remainder over the species */
+       NEAT_ROUND_SKIM = 1       /* per genome, the fractions carried from genome to genome, the shortfall to the
+                                  * species due the most */ };
+/* speciate_rule */
+enum { NEAT_SPECIATE_AFTER = 0,      /* the next generation speciated once it is whole */
+       NEAT_SPECIATE_INTERLEAVED = 1 /* each child placed as it is born, and a later species' parents include the
+                                      * children of earlier species that joined it */ };
+/* pop_stagnation_rule: when the population's best has not risen for pop_stagnation generations */
+enum { NEAT_POPSTAG_TWO_BEST = 0, /* only the two best species breed, as usual */
+       NEAT_POPSTAG_DELTA = 1     /* "delta coding": the two best species' champions fill half the population
+                                   * each with mutated copies of themselves */ };
 
 /* How a network steps (the runtime's modes, docs/runtime.md "Semantics"):
  * what evolution evaluates and what the champion blob records. */
@@ -160,9 +211,36 @@ typedef struct neat_params {
     int allow_recurrent;        /* 1 (default): recurrent and self connections may be added; 0: feed-forward only */
     uint32_t max_nodes;         /* never more nodes than the blob format allows (256) */
     int net_step;               /* enum neat_net_step: NEAT_STEP_SYNC (default) or NEAT_STEP_PROPAGATE */
+    /* NEAT C++ 1.2.1's rules (the enums above; all 0 by default) */
+    int profile;                /* enum neat_profile: which profile set the switches (a record: the switches decide) */
+    int equal_fitness_rule;
+    int reenable_rule;
+    int add_conn_rule;
+    double recur_only_prob;     /* NEAT_ADD_CONN_CPP: the chance a new link must close a loop (params256.ne: 0.2) */
+    int species_rep;
+    int weight_mut_rule;
+    int elitism_rule;
+    int interspecies_rule;
+    int identical_rule;
+    int offspring_rounding;
+    int speciate_rule;
+    uint32_t cull_every;        /* NEAT_STAGNATION_CPP: a species culled every this many generations (30; 0 never) */
+    uint32_t cull_age;          /* NEAT_STAGNATION_CPP: ... among the species at least this many generations old (20) */
+    int pop_stagnation_rule;
 } neat_params;
 
 NEAT_API neat_params neat_params_default(void);
+/* Appendix A's values with NEAT C++ 1.2.1's rules (every switch above at
+ * its release value), and where Appendix A is silent the release's
+ * params256.ne: recur_only_prob 0.2, dropoff_age 1000, the cull every 30
+ * generations among species aged 20; pop_stagnation 0 (the release's
+ * dropoff_age + 5 = 1005 generations, beyond any run here). */
+NEAT_API neat_params neat_params_neat_cpp(void);
+/* Sets the switches of profile (enum neat_profile) and the values they
+ * bring (as neat_params_neat_cpp, or neat_params_default's for
+ * NEAT_PROFILE_DEFAULT), leaving every other value of *p as it is.
+ * NEAT_E_ARG for an unknown profile. */
+NEAT_API int neat_params_set_profile(neat_params *p, int profile);
 /* NEAT_OK, or NEAT_E_PARAM with *field set to the offending field's name. */
 NEAT_API int neat_params_check(const neat_params *p, const char **field);
 

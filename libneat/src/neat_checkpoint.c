@@ -6,8 +6,29 @@
 
 static const uint8_t neat_ckpt_magic[8] = {'N', 'E', 'A', 'T', 'C', 'K', 'P', 'T'};
 
+/* Version 4 holds NEAT C++ 1.2.1's switches (and each species' culled
+ * flag); a population that uses none of them is written as version 3, so
+ * that every checkpoint of the default rules keeps its bytes. */
+static int neat_ckpt_needs_v4(const neat_pop *pop)
+{
+    const neat_params *p = &pop->p;
+    neat_params d = neat_params_default();
+    uint32_t k;
+    for (k = 0; k < pop->n_species; k++)
+        if (pop->species[k].culled)
+            return 1;
+    return p->profile != d.profile || p->equal_fitness_rule != d.equal_fitness_rule ||
+           p->reenable_rule != d.reenable_rule || p->add_conn_rule != d.add_conn_rule ||
+           p->recur_only_prob != d.recur_only_prob || p->species_rep != d.species_rep ||
+           p->weight_mut_rule != d.weight_mut_rule || p->elitism_rule != d.elitism_rule ||
+           p->interspecies_rule != d.interspecies_rule || p->identical_rule != d.identical_rule ||
+           p->offspring_rounding != d.offspring_rounding || p->speciate_rule != d.speciate_rule ||
+           p->cull_every != d.cull_every || p->cull_age != d.cull_age ||
+           p->pop_stagnation_rule != d.pop_stagnation_rule || p->stagnation_rule == NEAT_STAGNATION_CPP;
+}
+
 /* ---- parameters: one fixed order, the struct's ---- */
-static void neat_put_params(neat_wbuf *w, const neat_params *p)
+static void neat_put_params(neat_wbuf *w, const neat_params *p, uint32_t version)
 {
     neat_put_u32(w, p->pop_size);
     neat_put_u32(w, p->n_inputs);
@@ -45,6 +66,23 @@ static void neat_put_params(neat_wbuf *w, const neat_params *p)
     neat_put_u32(w, (uint32_t)p->allow_recurrent);
     neat_put_u32(w, p->max_nodes);
     neat_put_u32(w, (uint32_t)p->net_step); /* version 3 */
+    if (version < 4)
+        return;
+    neat_put_u32(w, (uint32_t)p->profile);
+    neat_put_u32(w, (uint32_t)p->equal_fitness_rule);
+    neat_put_u32(w, (uint32_t)p->reenable_rule);
+    neat_put_u32(w, (uint32_t)p->add_conn_rule);
+    neat_put_f64(w, p->recur_only_prob);
+    neat_put_u32(w, (uint32_t)p->species_rep);
+    neat_put_u32(w, (uint32_t)p->weight_mut_rule);
+    neat_put_u32(w, (uint32_t)p->elitism_rule);
+    neat_put_u32(w, (uint32_t)p->interspecies_rule);
+    neat_put_u32(w, (uint32_t)p->identical_rule);
+    neat_put_u32(w, (uint32_t)p->offspring_rounding);
+    neat_put_u32(w, (uint32_t)p->speciate_rule);
+    neat_put_u32(w, p->cull_every);
+    neat_put_u32(w, p->cull_age);
+    neat_put_u32(w, (uint32_t)p->pop_stagnation_rule);
 }
 
 /* version: the checkpoint's; before 3 the networks stepped sync, the only mode */
@@ -86,6 +124,41 @@ static void neat_get_params(neat_rbuf *r, neat_params *p, uint32_t version)
     p->allow_recurrent = (int)neat_get_u32(r);
     p->max_nodes = neat_get_u32(r);
     p->net_step = version >= 3 ? (int)neat_get_u32(r) : NEAT_STEP_SYNC;
+    if (version < 4) {
+        /* before NEAT C++'s switches: every one at this library's rule */
+        neat_params d = neat_params_default();
+        p->profile = d.profile;
+        p->equal_fitness_rule = d.equal_fitness_rule;
+        p->reenable_rule = d.reenable_rule;
+        p->add_conn_rule = d.add_conn_rule;
+        p->recur_only_prob = d.recur_only_prob;
+        p->species_rep = d.species_rep;
+        p->weight_mut_rule = d.weight_mut_rule;
+        p->elitism_rule = d.elitism_rule;
+        p->interspecies_rule = d.interspecies_rule;
+        p->identical_rule = d.identical_rule;
+        p->offspring_rounding = d.offspring_rounding;
+        p->speciate_rule = d.speciate_rule;
+        p->cull_every = d.cull_every;
+        p->cull_age = d.cull_age;
+        p->pop_stagnation_rule = d.pop_stagnation_rule;
+        return;
+    }
+    p->profile = (int)neat_get_u32(r);
+    p->equal_fitness_rule = (int)neat_get_u32(r);
+    p->reenable_rule = (int)neat_get_u32(r);
+    p->add_conn_rule = (int)neat_get_u32(r);
+    p->recur_only_prob = neat_get_f64(r);
+    p->species_rep = (int)neat_get_u32(r);
+    p->weight_mut_rule = (int)neat_get_u32(r);
+    p->elitism_rule = (int)neat_get_u32(r);
+    p->interspecies_rule = (int)neat_get_u32(r);
+    p->identical_rule = (int)neat_get_u32(r);
+    p->offspring_rounding = (int)neat_get_u32(r);
+    p->speciate_rule = (int)neat_get_u32(r);
+    p->cull_every = neat_get_u32(r);
+    p->cull_age = neat_get_u32(r);
+    p->pop_stagnation_rule = (int)neat_get_u32(r);
 }
 
 /* Largest node id and innovation number a genome uses. */
@@ -133,14 +206,15 @@ static int neat_pop_state_ok(const neat_pop *pop)
 int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len)
 {
     neat_wbuf w;
-    uint32_t i, k;
+    uint32_t i, k, version;
     if (pop == NULL || buf == NULL || len == NULL)
         return NEAT_E_ARG;
     memset(&w, 0, sizeof w);
     w.a = &pop->a;
+    version = neat_ckpt_needs_v4(pop) ? 4 : 3;
     neat_put(&w, neat_ckpt_magic, 8);
-    neat_put_u32(&w, NEAT_CHECKPOINT_VERSION);
-    neat_put_params(&w, &pop->p);
+    neat_put_u32(&w, version);
+    neat_put_params(&w, &pop->p, version);
     neat_put_tag(&w, &pop->game);
     for (i = 0; i < 4; i++)
         neat_put_u64(&w, pop->rng.s[i]);
@@ -180,6 +254,8 @@ int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len)
         neat_put_u32(&w, s->n_members);
         for (i = 0; i < s->n_members; i++)
             neat_put_u32(&w, s->members[i]);
+        if (version >= 4)
+            neat_put_u8(&w, s->culled);
     }
     return neat_put_finish(&w, buf, len);
 }
@@ -250,6 +326,7 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
             v->innov = neat_get_u32(&r);
             v->innov2 = neat_get_u32(&r);
             v->node = neat_get_u32(&r);
+            v->weight = 0.0;
             pop->iv.n = i + 1;
         }
         pop->have_best = (uint8_t)neat_get_u8(&r);
@@ -294,6 +371,11 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
                     }
                     s->members[s->n_members++] = idx;
                 }
+            }
+            if (version >= 4) {
+                s->culled = (uint8_t)neat_get_u8(&r);
+                if (s->culled > 1)
+                    neat_fail(&r, NEAT_E_FORMAT);
             }
         }
         /* every genome in exactly one species */

@@ -1,11 +1,19 @@
 /* neat_crossover.c - crossover: genes lined up by innovation number (the paper's Figure 4). */
 #include "neat_internal.h"
 
-/* Appends a gene to the child unless it duplicates a link the child has. */
-static int neat_take(neat_genome *child, const neat_conn *c, double weight, int enabled, const neat_alloc *a)
+/* Appends a gene to the child unless it duplicates a link the child has.
+ * *disable (NEAT_REENABLE_CPP's pending flag; NULL otherwise): set, it
+ * disables the next gene appended, and is then cleared; a skipped gene
+ * leaves it for the next one, as NEAT C++'s mate_multipoint does. */
+static int neat_take(neat_genome *child, const neat_conn *c, double weight, int enabled, int *disable,
+                     const neat_alloc *a)
 {
     if (neat_genome_has_link(child, c->in, c->out))
         return NEAT_OK;
+    if (disable != NULL && *disable) {
+        enabled = 0;
+        *disable = 0;
+    }
     return neat_genome_add_conn(child, c->in, c->out, weight, c->innov, enabled, a);
 }
 
@@ -54,7 +62,9 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
 {
     uint32_t i = 0, j = 0;
     int better; /* 0: mom, 1: dad, -1: equal fitness */
-    int err;
+    int err, pending = 0;
+    /* NEAT C++'s multipoint crossover: the chosen gene's own flag, and a pending disable */
+    int *disable = p->reenable_rule == NEAT_REENABLE_CPP && !avg ? &pending : NULL;
 
     if (child == mom || child == dad)
         return NEAT_E_ARG;
@@ -64,6 +74,10 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
     child->fitness = 0;
     child->species = 0;
     better = mom->fitness > dad->fitness ? 0 : (dad->fitness > mom->fitness ? 1 : -1);
+    /* NEAT C++ 1.2.1: at equal fitness the smaller genome counts as the
+     * fitter (the second parent when both have as many genes) */
+    if (better < 0 && p->equal_fitness_rule == NEAT_EQUAL_SMALLER)
+        better = mom->n_conns < dad->n_conns ? 0 : 1;
 
     err = neat_union_nodes(child, mom, dad, a);
     while (!err && (i < mom->n_conns || j < dad->n_conns)) {
@@ -72,9 +86,14 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
             const neat_conn *pick = neat_rng_uniform_inl(rng) < 0.5 ? cm : cd;
             double w = avg ? 0.5 * (cm->weight + cd->weight) : pick->weight;
             int enabled = 1;
-            if (!cm->enabled || !cd->enabled)
+            if (disable != NULL) {
+                enabled = pick->enabled;
+                if ((!cm->enabled || !cd->enabled) && neat_rng_uniform_inl(rng) < p->disable_prob)
+                    pending = 1;
+            } else if (!cm->enabled || !cd->enabled) {
                 enabled = !(neat_rng_uniform_inl(rng) < p->disable_prob);
-            err = neat_take(child, pick, w, enabled, a);
+            }
+            err = neat_take(child, pick, w, enabled, disable, a);
             i++;
             j++;
         } else {
@@ -83,7 +102,7 @@ int neat_crossover(neat_genome *child, const neat_genome *mom, const neat_genome
             const neat_conn *c = from_dad ? &dad->conns[j] : &mom->conns[i];
             int keep = better < 0 ? neat_rng_uniform_inl(rng) < p->excess_equal_prob : better == from_dad;
             if (keep)
-                err = neat_take(child, c, c->weight, c->enabled, a);
+                err = neat_take(child, c, c->weight, c->enabled, disable, a);
             if (from_dad)
                 j++;
             else

@@ -20,9 +20,11 @@ static neat_innov *neat_innov_push(neat_innovs *iv, const neat_alloc *a)
     return &iv->list[iv->n++];
 }
 
-int neat_innov_conn(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, uint32_t *innov)
+int neat_innov_conn_rec(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, neat_innov **rec,
+                        int *fresh)
 {
     neat_innov *r = neat_innov_find(iv, NEAT_INNOV_CONN, in, out, 0);
+    *fresh = r == NULL;
     if (r == NULL) {
         r = neat_innov_push(iv, a);
         if (r == NULL)
@@ -34,9 +36,19 @@ int neat_innov_conn(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t 
         r->innov = iv->next_innov++;
         r->innov2 = 0;
         r->node = 0;
+        r->weight = 0.0;
     }
-    *innov = r->innov;
+    *rec = r;
     return NEAT_OK;
+}
+
+int neat_innov_conn(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, uint32_t *innov)
+{
+    neat_innov *r;
+    int fresh, err = neat_innov_conn_rec(iv, a, in, out, &r, &fresh);
+    if (!err)
+        *innov = r->innov;
+    return err;
 }
 
 int neat_innov_node(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, uint32_t split,
@@ -54,6 +66,7 @@ int neat_innov_node(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t 
         r->node = iv->next_node++;
         r->innov = iv->next_innov++;
         r->innov2 = iv->next_innov++;
+        r->weight = 0.0;
     }
     *out_rec = *r;
     return NEAT_OK;

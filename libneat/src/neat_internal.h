@@ -26,6 +26,8 @@ typedef struct neat_innov {
     uint32_t innov;          /* the new connection; for a node: in -> node */
     uint32_t innov2;         /* node -> out */
     uint32_t node;           /* the new node's id */
+    double weight;           /* a connection's first weight (NEAT_ADD_CONN_CPP reuses it within the generation;
+                              * not in checkpoints: the list is emptied before it is read again) */
 } neat_innov;
 
 typedef struct neat_innovs {
@@ -36,6 +38,9 @@ typedef struct neat_innovs {
 } neat_innovs;
 
 int neat_innov_conn(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, uint32_t *innov);
+/* The same, and *rec the list's entry (its weight 0 and *fresh 1 when the innovation is new). */
+int neat_innov_conn_rec(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, neat_innov **rec,
+                        int *fresh);
 int neat_innov_node(neat_innovs *iv, const neat_alloc *a, uint32_t in, uint32_t out, uint32_t split,
                     neat_innov *out_rec);
 void neat_innov_reset(neat_innovs *iv); /* start of every generation's reproduction */
@@ -79,6 +84,8 @@ typedef struct neat_species {
     double remainder;  /* fractional part of its quota */
     uint32_t offspring;
     uint8_t eligible;  /* may breed this generation */
+    uint8_t super;     /* NEAT_POPSTAG_DELTA this generation: the offspring are copies of the champion */
+    uint8_t culled;    /* NEAT_STAGNATION_CPP: culled for good (its fitness times 0.01 from then on) */
 } neat_species;
 
 /* ---- the population ---- */
@@ -136,6 +143,13 @@ int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *pla
  * founds the new ones, drops empty ones, moves delta_t. Frees the plan. */
 void neat_speciate_commit(neat_pop *pop, neat_spec_plan *plan);
 void neat_speciate_plan_free(neat_pop *pop, neat_spec_plan *plan);
+/* The plan in three steps (neat_speciate_plan is all three): begin
+ * allocates it; place puts gs[i] in the first species whose representative
+ * is close enough, or a new one (gs[i] may be placed as soon as it exists:
+ * NEAT_SPECIATE_INTERLEAVED); finish allocates what the commit needs. */
+int neat_speciate_plan_begin(neat_pop *pop, neat_spec_plan *plan);
+void neat_speciate_place(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan, uint32_t i);
+int neat_speciate_plan_finish(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan);
 /* Both at once, on pop->genomes (population creation). */
 int neat_speciate(neat_pop *pop);
 /* Members of each species best first (ties: lower index), and the species'
@@ -147,8 +161,12 @@ void neat_species_free(neat_species *s, const neat_alloc *a);
 /* offspring per species: sum == pop_size, whatever the fitness values.
  * *since_pop: generations without a new population best (may be reset). */
 void neat_apportion(neat_pop *pop, uint32_t *since_pop);
-/* the next generation into next[pop_size] (initialised genomes) */
-int neat_reproduce(neat_pop *pop, neat_genome *next);
+/* the next generation into next[pop_size] (initialised genomes); plan: NULL,
+ * or (NEAT_SPECIATE_INTERLEAVED) a begun plan each child is placed in as it
+ * is born */
+int neat_reproduce(neat_pop *pop, neat_genome *next, neat_spec_plan *plan);
+/* a standard normal draw (Marsaglia's polar method) */
+double neat_rng_gauss(neat_rng *rng);
 
 
 /* ---- the PRNG's draws, inline for libneat's modules: an epoch makes

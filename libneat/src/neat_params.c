@@ -45,12 +45,68 @@ neat_params neat_params_default(void)
     p.allow_recurrent = 1;
     p.max_nodes = NRT_MAX_NODES;
     p.net_step = NEAT_STEP_SYNC; /* chosen: the paper-era NEAT's step (docs/parameters.md) */
+    /* the paper's text where the release differs (neat_params_neat_cpp) */
+    p.profile = NEAT_PROFILE_DEFAULT;
+    p.equal_fitness_rule = NEAT_EQUAL_RANDOM;
+    p.reenable_rule = NEAT_REENABLE_PAPER;
+    p.add_conn_rule = NEAT_ADD_CONN_ANY;
+    p.recur_only_prob = 0.0;
+    p.species_rep = NEAT_REP_RANDOM;
+    p.weight_mut_rule = NEAT_WEIGHTS_UNIFORM;
+    p.elitism_rule = NEAT_ELITE_BY_SIZE;
+    p.interspecies_rule = NEAT_INTER_UNIFORM;
+    p.identical_rule = NEAT_IDENTICAL_SAME;
+    p.offspring_rounding = NEAT_ROUND_REMAINDER;
+    p.speciate_rule = NEAT_SPECIATE_AFTER;
+    p.cull_every = 30;          /* C++ release (Population::epoch): only under NEAT_STAGNATION_CPP */
+    p.cull_age = 20;
+    p.pop_stagnation_rule = NEAT_POPSTAG_TWO_BEST;
+    return p;
+}
+
+int neat_params_set_profile(neat_params *p, int profile)
+{
+    neat_params d = neat_params_default();
+    int cpp = profile == NEAT_PROFILE_NEAT_CPP;
+    if (p == NULL || (profile != NEAT_PROFILE_DEFAULT && !cpp))
+        return NEAT_E_ARG;
+    p->profile = profile;
+    p->equal_fitness_rule = cpp ? NEAT_EQUAL_SMALLER : d.equal_fitness_rule;
+    p->reenable_rule = cpp ? NEAT_REENABLE_CPP : d.reenable_rule;
+    p->add_conn_rule = cpp ? NEAT_ADD_CONN_CPP : d.add_conn_rule;
+    p->recur_only_prob = cpp ? 0.2 : d.recur_only_prob;       /* params256.ne */
+    p->species_rep = cpp ? NEAT_REP_CHAMPION : d.species_rep;
+    p->weight_mut_rule = cpp ? NEAT_WEIGHTS_CPP : d.weight_mut_rule;
+    p->elitism_rule = cpp ? NEAT_ELITE_BY_OFFSPRING : d.elitism_rule;
+    p->interspecies_rule = cpp ? NEAT_INTER_CPP : d.interspecies_rule;
+    p->identical_rule = cpp ? NEAT_IDENTICAL_EQUAL : d.identical_rule;
+    p->offspring_rounding = cpp ? NEAT_ROUND_SKIM : d.offspring_rounding;
+    p->speciate_rule = cpp ? NEAT_SPECIATE_INTERLEAVED : d.speciate_rule;
+    p->stagnation_rule = cpp ? NEAT_STAGNATION_CPP : d.stagnation_rule;
+    p->dropoff_age = cpp ? 1000 : d.dropoff_age;               /* params256.ne */
+    p->cull_every = d.cull_every;
+    p->cull_age = d.cull_age;
+    p->pop_stagnation_rule = cpp ? NEAT_POPSTAG_DELTA : d.pop_stagnation_rule;
+    p->pop_stagnation = cpp ? 0 : d.pop_stagnation;            /* the release's 1005: beyond any run */
+    return NEAT_OK;
+}
+
+neat_params neat_params_neat_cpp(void)
+{
+    neat_params p = neat_params_default();
+    (void)neat_params_set_profile(&p, NEAT_PROFILE_NEAT_CPP);
     return p;
 }
 
 static int neat_prob_ok(double x)
 {
     return x >= 0.0 && x <= 1.0;
+}
+
+/* the release's switches: 0 (this library's rule) or 1 (the release's) */
+static int neat_switch_ok(int x)
+{
+    return x == 0 || x == 1;
 }
 
 /* Upper bounds of the parameters that have no natural one, so that a value
@@ -94,7 +150,7 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "pop_stagnation";
     else if (!(p->survival_fraction > 0) || p->survival_fraction > 1)
         bad = "survival_fraction";
-    else if (p->stagnation_rule < NEAT_STAGNATION_OLDEST_WORST || p->stagnation_rule > NEAT_STAGNATION_IMPROVEMENT)
+    else if (p->stagnation_rule < NEAT_STAGNATION_OLDEST_WORST || p->stagnation_rule > NEAT_STAGNATION_CPP)
         bad = "stagnation_rule";
     else if (!neat_prob_ok(p->stagnation_factor))
         bad = "stagnation_factor";
@@ -134,6 +190,36 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "max_nodes";
     else if (p->net_step != NEAT_STEP_SYNC && p->net_step != NEAT_STEP_PROPAGATE)
         bad = "net_step";
+    else if (p->profile != NEAT_PROFILE_DEFAULT && p->profile != NEAT_PROFILE_NEAT_CPP)
+        bad = "profile";
+    else if (!neat_switch_ok(p->equal_fitness_rule))
+        bad = "equal_fitness_rule";
+    else if (!neat_switch_ok(p->reenable_rule))
+        bad = "reenable_rule";
+    else if (!neat_switch_ok(p->add_conn_rule))
+        bad = "add_conn_rule";
+    else if (!neat_prob_ok(p->recur_only_prob))
+        bad = "recur_only_prob";
+    else if (!neat_switch_ok(p->species_rep))
+        bad = "species_rep";
+    else if (!neat_switch_ok(p->weight_mut_rule))
+        bad = "weight_mut_rule";
+    else if (!neat_switch_ok(p->elitism_rule))
+        bad = "elitism_rule";
+    else if (!neat_switch_ok(p->interspecies_rule))
+        bad = "interspecies_rule";
+    else if (!neat_switch_ok(p->identical_rule))
+        bad = "identical_rule";
+    else if (!neat_switch_ok(p->offspring_rounding))
+        bad = "offspring_rounding";
+    else if (!neat_switch_ok(p->speciate_rule))
+        bad = "speciate_rule";
+    else if (p->cull_every > NEAT_PARAM_MAX_AGE)
+        bad = "cull_every";
+    else if (p->cull_age > NEAT_PARAM_MAX_AGE)
+        bad = "cull_age";
+    else if (!neat_switch_ok(p->pop_stagnation_rule))
+        bad = "pop_stagnation_rule";
     if (field != NULL)
         *field = bad;
     return bad == NULL ? NEAT_OK : NEAT_E_PARAM;

@@ -194,17 +194,21 @@ int neat_pop_epoch(neat_pop *pop)
     neat_species_rank(pop); /* sorting members changes nothing the retry would not redo */
     improved = !pop->have_best || pop->genomes[best].fitness > pop->best_ever.fitness;
     since_pop = improved ? 0 : pop->since_pop_improved + 1;
+    /* NEAT C++'s population record starts at 0 and must be exceeded */
+    if (pop->p.pop_stagnation_rule == NEAT_POPSTAG_DELTA)
+        since_pop = pop->genomes[best].fitness > (pop->have_best ? pop->best_ever.fitness : 0.0)
+                        ? 0 : pop->since_pop_improved + 1;
     err = neat_genome_copy(&last, &pop->genomes[best], &pop->a);
     if (!err && improved)
         err = neat_genome_copy(&ever, &pop->genomes[best], &pop->a);
     if (!err) {
         neat_apportion(pop, &since_pop);
         /* the next generation's representatives: members of this one drawn by the PRNG
-         * (a retry draws the same ones from the restored PRNG) */
+         * (a retry draws the same ones from the restored PRNG), or the champions */
         for (k = 0; k < pop->n_species && !err; k++) {
             neat_species *s = &pop->species[k];
-            err = neat_genome_copy(&s->rep, &pop->genomes[s->members[neat_rng_below_inl(&pop->rng, s->n_members)]],
-                                   &pop->a);
+            uint32_t m = pop->p.species_rep == NEAT_REP_CHAMPION ? 0 : neat_rng_below_inl(&pop->rng, s->n_members);
+            err = neat_genome_copy(&s->rep, &pop->genomes[s->members[m]], &pop->a);
         }
     }
     if (!err) {
@@ -216,10 +220,21 @@ int neat_pop_epoch(neat_pop *pop)
     }
     if (!err) {
         neat_innov_reset(&pop->iv);
-        err = neat_reproduce(pop, next);
+        if (pop->p.speciate_rule == NEAT_SPECIATE_INTERLEAVED) {
+            /* each child placed as it is born (NEAT C++'s Species::reproduce) */
+            err = neat_speciate_plan_begin(pop, &plan);
+            if (!err) {
+                err = neat_reproduce(pop, next, &plan);
+                err = err ? err : neat_speciate_plan_finish(pop, next, &plan);
+                if (err)
+                    neat_speciate_plan_free(pop, &plan);
+            }
+        } else {
+            err = neat_reproduce(pop, next, NULL);
+            if (!err)
+                err = neat_speciate_plan(pop, next, &plan);
+        }
     }
-    if (!err)
-        err = neat_speciate_plan(pop, next, &plan);
     if (err) {
         if (next != NULL)
             pop->spare = next; /* its storage, for the retry */

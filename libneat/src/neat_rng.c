@@ -1,4 +1,6 @@
-/* neat_rng.c - libneat's own PRNG (xoshiro256**, splitmix64 seeding) and per-game seed derivation. */
+/* neat_rng.c - libneat's own PRNG (xoshiro256**, splitmix64 seeding), its normal draws, and per-game seed derivation. */
+#include <math.h>
+
 #include "neat_internal.h"
 
 static uint64_t neat_splitmix64(uint64_t *x)
@@ -49,4 +51,17 @@ uint64_t neat_seed_derive(uint64_t base, const uint64_t *keys, size_t n_keys)
         h = neat_splitmix64(&st);
     }
     return h;
+}
+
+double neat_rng_gauss(neat_rng *rng)
+{
+    /* Marsaglia's polar method; the second value of each pair is dropped so
+     * that the PRNG is the only state (NEAT C++'s gaussrand keeps it in a static) */
+    double u, v, s;
+    do {
+        u = 2.0 * neat_rng_uniform_inl(rng) - 1.0;
+        v = 2.0 * neat_rng_uniform_inl(rng) - 1.0;
+        s = u * u + v * v;
+    } while (s >= 1.0 || s == 0.0);
+    return u * sqrt(-2.0 * log(s) / s);
 }

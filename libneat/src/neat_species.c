@@ -28,10 +28,10 @@ void neat_speciate_plan_free(neat_pop *pop, neat_spec_plan *plan)
     memset(plan, 0, sizeof *plan);
 }
 
-int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan)
+int neat_speciate_plan_begin(neat_pop *pop, neat_spec_plan *plan)
 {
     const neat_alloc *a = &pop->a;
-    uint32_t i, k, j, n = pop->p.pop_size, ns = pop->n_species;
+    uint32_t n = pop->p.pop_size, ns = pop->n_species;
 
     memset(plan, 0, sizeof *plan);
     /* at most one new species per genome */
@@ -40,26 +40,39 @@ int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *pla
     plan->slot = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)n * sizeof(uint32_t));
     plan->founder = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)n * sizeof(uint32_t));
     plan->count = (uint32_t *)neat_mem_realloc(a, NULL, 0, (size_t)(ns + n) * sizeof(uint32_t));
-    if (plan->slot == NULL || plan->founder == NULL || plan->count == NULL)
-        goto nomem;
-    memset(plan->count, 0, (size_t)(ns + n) * sizeof(uint32_t));
-    for (i = 0; i < n; i++) {
-        /* the first species (oldest first) whose representative is close
-         * enough; the founders of this generation's new species come last */
-        for (k = 0; k < ns; k++)
-            if (neat_genome_compatible(&gs[i], &pop->species[k].rep, &pop->p, pop->delta_t))
-                break;
-        if (k == ns) {
-            for (j = 0; j < plan->n_new; j++)
-                if (neat_genome_compatible(&gs[i], &gs[plan->founder[j]], &pop->p, pop->delta_t))
-                    break;
-            if (j == plan->n_new)
-                plan->founder[plan->n_new++] = i;
-            k = ns + j;
-        }
-        plan->slot[i] = k;
-        plan->count[k]++;
+    if (plan->slot == NULL || plan->founder == NULL || plan->count == NULL) {
+        neat_speciate_plan_free(pop, plan);
+        return NEAT_E_NOMEM;
     }
+    memset(plan->count, 0, (size_t)(ns + n) * sizeof(uint32_t));
+    return NEAT_OK;
+}
+
+void neat_speciate_place(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan, uint32_t i)
+{
+    uint32_t k, j, ns = plan->ns;
+    /* the first species (oldest first) whose representative is close
+     * enough; the founders of this generation's new species come last */
+    for (k = 0; k < ns; k++)
+        if (neat_genome_compatible(&gs[i], &pop->species[k].rep, &pop->p, pop->delta_t))
+            break;
+    if (k == ns) {
+        for (j = 0; j < plan->n_new; j++)
+            if (neat_genome_compatible(&gs[i], &gs[plan->founder[j]], &pop->p, pop->delta_t))
+                break;
+        if (j == plan->n_new)
+            plan->founder[plan->n_new++] = i;
+        k = ns + j;
+    }
+    plan->slot[i] = k;
+    plan->count[k]++;
+}
+
+int neat_speciate_plan_finish(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan)
+{
+    const neat_alloc *a = &pop->a;
+    uint32_t k, j, ns = plan->ns;
+
     plan->n_slots = ns + plan->n_new;
     /* every allocation the commit will need, now */
     if (neat_mem_reserve(a, (void **)&pop->species, &pop->cap_species, plan->n_slots, sizeof(neat_species)))
@@ -91,6 +104,17 @@ int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *pla
 nomem:
     neat_speciate_plan_free(pop, plan);
     return NEAT_E_NOMEM;
+}
+
+int neat_speciate_plan(neat_pop *pop, const neat_genome *gs, neat_spec_plan *plan)
+{
+    uint32_t i;
+    int err = neat_speciate_plan_begin(pop, plan);
+    if (err)
+        return err;
+    for (i = 0; i < pop->p.pop_size; i++)
+        neat_speciate_place(pop, gs, plan, i);
+    return neat_speciate_plan_finish(pop, gs, plan);
 }
 
 void neat_speciate_commit(neat_pop *pop, neat_spec_plan *plan)
@@ -164,7 +188,13 @@ void neat_species_rank(neat_pop *pop)
                 s->members[j] = s->members[j - 1];
             s->members[j] = m;
         }
-        if (s->age == 0 || pop->genomes[s->members[0]].fitness > s->best_fitness) {
+        if (pop->p.stagnation_rule == NEAT_STAGNATION_CPP) {
+            /* NEAT C++'s max_fitness_ever starts at 0 and must be exceeded */
+            double before = s->age == 0 ? 0.0 : s->best_fitness;
+            int up = pop->genomes[s->members[0]].fitness > before;
+            s->next_best = up ? pop->genomes[s->members[0]].fitness : before;
+            s->next_since = up ? 0 : s->since_improved + 1;
+        } else if (s->age == 0 || pop->genomes[s->members[0]].fitness > s->best_fitness) {
             s->next_best = pop->genomes[s->members[0]].fitness;
             s->next_since = 0;
         } else {

@@ -12,9 +12,18 @@
 #include "neat_internal.h"
 #include "nrt.h"
 
+/* the profile the populations of a test use (the _cpp variants below set
+ * NEAT_PROFILE_NEAT_CPP, whose checkpoints are version 4) */
+static int ckpt_profile = NEAT_PROFILE_DEFAULT;
+
 static neat_params ckpt_params(uint32_t pop_size)
 {
     neat_params p = neat_params_default();
+    assert_int_equal(neat_params_set_profile(&p, ckpt_profile), NEAT_OK);
+    if (ckpt_profile == NEAT_PROFILE_NEAT_CPP) {
+        p.cull_every = 3; /* a cull within the tests' few generations */
+        p.cull_age = 1;
+    }
     p.pop_size = pop_size;
     p.n_inputs = 2;
     p.n_outputs = 1;
@@ -201,7 +210,9 @@ static void test_header_layout(void **state)
     (void)state;
     save(pop, &buf, &len);
     assert_memory_equal(buf, "NEATCKPT", 8);
-    assert_int_equal(buf[8] | buf[9] << 8 | buf[10] << 16 | (uint32_t)buf[11] << 24, NEAT_CHECKPOINT_VERSION);
+    /* the default rules' checkpoints keep version 3's bytes; NEAT C++'s switches need version 4 */
+    assert_int_equal(buf[8] | buf[9] << 8 | buf[10] << 16 | (uint32_t)buf[11] << 24,
+                     ckpt_profile == NEAT_PROFILE_DEFAULT ? 3 : NEAT_CHECKPOINT_VERSION);
     crc = (uint32_t)buf[len - 4] | (uint32_t)buf[len - 3] << 8 | (uint32_t)buf[len - 2] << 16 |
           (uint32_t)buf[len - 1] << 24;
     assert_int_equal(crc, nrt_crc32(0, buf, len - 4));
@@ -306,8 +317,8 @@ static void test_bad_magic(void **state)
 
 static void test_bad_version(void **state)
 {
-    /* 2 and 3 load (tests of version 2: test_version2_loads) */
-    static const uint8_t versions[][4] = {{0, 0, 0, 0}, {1, 0, 0, 0}, {4, 0, 0, 0}, {3, 0, 0, 1}};
+    /* 2, 3 and 4 load (tests of version 2: test_version2_loads; of 4: the _cpp tests) */
+    static const uint8_t versions[][4] = {{0, 0, 0, 0}, {1, 0, 0, 0}, {5, 0, 0, 0}, {3, 0, 0, 1}};
     neat_pop *pop = evolved_pop(10, 1, 35), *out = NULL;
     uint8_t *buf;
     size_t len, off, k;
@@ -677,6 +688,87 @@ static void test_game_tag_hostile(void **state)
     neat_pop_free(pop);
 }
 
+/* ---- NEAT C++ 1.2.1's switches: version 4 ---- */
+
+#define CKPT_CPP(name)                                                                                              \
+    static void name##_cpp(void **state)                                                                            \
+    {                                                                                                               \
+        ckpt_profile = NEAT_PROFILE_NEAT_CPP;                                                                       \
+        name(state);                                                                                                \
+        ckpt_profile = NEAT_PROFILE_DEFAULT;                                                                        \
+    }
+CKPT_CPP(test_resume_gives_same_run)
+CKPT_CPP(test_resume_mid_generation)
+CKPT_CPP(test_save_load_save_is_identity)
+CKPT_CPP(test_header_layout)
+CKPT_CPP(test_every_truncation_rejected)
+CKPT_CPP(test_single_byte_corruption_rejected)
+
+static void test_cpp_switches_and_culls_round_trip(void **state)
+{
+    neat_pop *pop, *copy;
+    uint8_t *buf;
+    size_t len;
+    neat_params p;
+    uint32_t k, culled = 0;
+    (void)state;
+    ckpt_profile = NEAT_PROFILE_NEAT_CPP;
+    pop = evolved_pop(40, 6, 41);
+    ckpt_profile = NEAT_PROFILE_DEFAULT;
+    p = *neat_pop_params(pop);
+    assert_true(pop->n_species > 1);
+    for (k = 0; k < pop->n_species; k++) {
+        pop->species[k].culled = (uint8_t)(k % 2); /* whatever the run culled, both values */
+        culled += pop->species[k].culled;
+    }
+    assert_true(culled > 0);
+    save(pop, &buf, &len);
+    copy = load_ok(buf, len);
+    {
+        const neat_params *q = neat_pop_params(copy);
+        assert_int_equal(q->profile, NEAT_PROFILE_NEAT_CPP);
+        assert_int_equal(q->equal_fitness_rule, p.equal_fitness_rule);
+        assert_int_equal(q->reenable_rule, p.reenable_rule);
+        assert_int_equal(q->add_conn_rule, p.add_conn_rule);
+        assert_true(q->recur_only_prob == p.recur_only_prob);
+        assert_int_equal(q->species_rep, p.species_rep);
+        assert_int_equal(q->weight_mut_rule, p.weight_mut_rule);
+        assert_int_equal(q->elitism_rule, p.elitism_rule);
+        assert_int_equal(q->interspecies_rule, p.interspecies_rule);
+        assert_int_equal(q->identical_rule, p.identical_rule);
+        assert_int_equal(q->offspring_rounding, p.offspring_rounding);
+        assert_int_equal(q->speciate_rule, p.speciate_rule);
+        assert_int_equal(q->cull_every, 3);
+        assert_int_equal(q->cull_age, 1);
+        assert_int_equal(q->pop_stagnation_rule, p.pop_stagnation_rule);
+        assert_int_equal(q->stagnation_rule, NEAT_STAGNATION_CPP);
+    }
+    for (k = 0; k < pop->n_species; k++)
+        assert_int_equal(copy->species[k].culled, pop->species[k].culled);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+    neat_pop_free(copy);
+}
+
+static void test_version3_loads_with_default_switches(void **state)
+{
+    neat_pop *pop = evolved_pop(30, 2, 42), *copy;
+    neat_params d = neat_params_default();
+    uint8_t *buf;
+    size_t len;
+    (void)state;
+    save(pop, &buf, &len);
+    assert_int_equal(buf[8], 3);
+    copy = load_ok(buf, len);
+    assert_int_equal(neat_pop_params(copy)->profile, NEAT_PROFILE_DEFAULT);
+    assert_int_equal(neat_pop_params(copy)->speciate_rule, d.speciate_rule);
+    assert_int_equal(neat_pop_params(copy)->cull_every, d.cull_every);
+    assert_int_equal(neat_pop_params(copy)->stagnation_rule, NEAT_STAGNATION_OLDEST_WORST);
+    neat_pop_buf_free(pop, buf, len);
+    neat_pop_free(pop);
+    neat_pop_free(copy);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -698,6 +790,14 @@ int main(void)
         cmocka_unit_test(test_version2_loads),
         cmocka_unit_test(test_game_tag_round_trip),
         cmocka_unit_test(test_game_tag_hostile),
+        cmocka_unit_test(test_resume_gives_same_run_cpp),
+        cmocka_unit_test(test_resume_mid_generation_cpp),
+        cmocka_unit_test(test_save_load_save_is_identity_cpp),
+        cmocka_unit_test(test_header_layout_cpp),
+        cmocka_unit_test(test_every_truncation_rejected_cpp),
+        cmocka_unit_test(test_single_byte_corruption_rejected_cpp),
+        cmocka_unit_test(test_cpp_switches_and_culls_round_trip),
+        cmocka_unit_test(test_version3_loads_with_default_switches),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
