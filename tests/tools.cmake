@@ -52,7 +52,7 @@ neat_add_test(tools test_stats)
 target_link_libraries(test_stats PRIVATE duelstats)
 
 # neat_bench from the outside (shell: exit codes, messages, thread independence)
-foreach(check bad-config dump-roundtrip threads built-in affinity)
+foreach(check bad-config dump-roundtrip threads built-in affinity profile)
   add_test(NAME tools/neat_bench_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/bench_cli.sh $<TARGET_FILE:neat_bench> ${check}
                    ${PROJECT_SOURCE_DIR}/bench)

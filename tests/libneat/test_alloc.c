@@ -65,9 +65,19 @@ static void counter_init(counter *c, size_t fail_at, int fail_after)
     c->fail_after = fail_after;
 }
 
+/* the profile of the scenario's population: the _cpp variants run NEAT
+ * C++ 1.2.1's rules, whose interleaved speciation and mate choice allocate
+ * elsewhere */
+static int alloc_profile = NEAT_PROFILE_DEFAULT;
+
 static neat_params alloc_params(void)
 {
     neat_params p = neat_params_default();
+    if (alloc_profile == NEAT_PROFILE_NEAT_CPP) {
+        (void)neat_params_set_profile(&p, alloc_profile);
+        p.cull_every = 2; /* a cull in the scenario's few epochs */
+        p.cull_age = 1;
+    }
     p.pop_size = 16;
     p.n_inputs = 2;
     p.n_outputs = 1;
@@ -284,6 +294,18 @@ static void test_phenotype_through_hook(void **state)
     neat_genome_free(&g, NULL);
 }
 
+#define ALLOC_CPP(name)                                                                                             \
+    static void name##_cpp(void **state)                                                                            \
+    {                                                                                                               \
+        alloc_profile = NEAT_PROFILE_NEAT_CPP;                                                                      \
+        name(state);                                                                                                \
+        alloc_profile = NEAT_PROFILE_DEFAULT;                                                                       \
+    }
+ALLOC_CPP(test_counting_allocator_balanced)
+ALLOC_CPP(test_every_allocation_refused_once)
+ALLOC_CPP(test_every_allocation_from_n_refused)
+ALLOC_CPP(test_epoch_retry_after_nomem)
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -293,6 +315,10 @@ int main(void)
         cmocka_unit_test(test_every_allocation_from_n_refused),
         cmocka_unit_test(test_epoch_retry_after_nomem),
         cmocka_unit_test(test_phenotype_through_hook),
+        cmocka_unit_test(test_counting_allocator_balanced_cpp),
+        cmocka_unit_test(test_every_allocation_refused_once_cpp),
+        cmocka_unit_test(test_every_allocation_from_n_refused_cpp),
+        cmocka_unit_test(test_epoch_retry_after_nomem_cpp),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

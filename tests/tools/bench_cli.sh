@@ -58,6 +58,29 @@ threads)
   [ "$one" = "$two" ] || { echo "1 thread:  $one"; echo "2 threads: $two"; exit 1; }
   echo "$one" | grep -q '"failures":0' || { echo "unexpected failures: $one"; exit 1; }
   ;;
+profile)
+  # [neat] profile = neat-cpp-1.2.1 sets NEAT C++ 1.2.1's switches before every other key, wherever it stands,
+  # so a key of the file overrides it (the key before it as much as the one after); the dump loads back
+  printf '[neat]\nadd_conn_rule = any\nprofile = neat-cpp-1.2.1\nrecur_only_prob = 0.5\n' > "$tmp/p.ini"
+  "$bench" xor --config "$tmp/p.ini" --dump-config > "$tmp/p.dump"
+  for want in "profile = neat-cpp-1.2.1" "add_conn_rule = any" "recur_only_prob = 0.5" "equal_fitness_rule = smaller" \
+              "reenable_rule = neat-cpp" "species_rep = champion" "weight_mut_rule = neat-cpp" \
+              "elitism_rule = offspring" "interspecies_rule = neat-cpp" "identical_rule = equal" \
+              "offspring_rounding = skim" "speciate_rule = interleaved" "stagnation_rule = neat-cpp" \
+              "dropoff_age = 1000" "pop_stagnation_rule = delta-coding" "pop_stagnation = 0"; do
+    grep -qx "$want" "$tmp/p.dump" || { echo "missing '$want' in:"; cat "$tmp/p.dump"; exit 1; }
+  done
+  "$bench" xor --config "$tmp/p.dump" --dump-config > "$tmp/p2.dump"
+  cmp "$tmp/p.dump" "$tmp/p2.dump"
+  # the values the profile does not set stay the file's and the defaults'
+  grep -qx "pop_size = 256" "$tmp/p.dump" && grep -qx "add_node_prob = 0.01" "$tmp/p.dump" || { echo "pop_size changed by the profile"; exit 1; }
+  printf '[neat]\nprofile = neat-cpp\n' > "$tmp/bad.ini"
+  set +e
+  msg=$("$bench" xor --config "$tmp/bad.ini" 2>&1 >/dev/null); rc=$?
+  set -e
+  [ "$rc" -eq 2 ] && echo "$msg" | grep -q "bad.ini:2: bad value 'neat-cpp' for profile: expected one of default, neat-cpp-1.2.1" ||
+    { echo "got $rc: $msg"; exit 1; }
+  ;;
 *)
   echo "unknown check $what"; exit 2 ;;
 esac

@@ -10,10 +10,26 @@
 #define NEAT_ENUM(name, names, n) {#name, NEAT_CFG_ENUM, offsetof(neat_params, name), 0, (n) - 1, names}
 
 static const char *const neat_mode_names[] = {"complexify", "fixed", "simplify"};
-static const char *const neat_stagnation_names[] = {"oldest-worst", "improvement"};
+static const char *const neat_stagnation_names[] = {"oldest-worst", "improvement", "neat-cpp"};
 static const char *const neat_net_step_names[] = {"sync", "propagate"}; /* enum neat_net_step */
+/* NEAT C++ 1.2.1's switches: this library's rule first (0), the release's second (1) */
+static const char *const neat_profile_names[] = {"default", "neat-cpp-1.2.1"};
+static const char *const neat_equal_names[] = {"random", "smaller"};
+static const char *const neat_reenable_names[] = {"paper", "neat-cpp"};
+static const char *const neat_add_conn_names[] = {"any", "neat-cpp"};
+static const char *const neat_rep_names[] = {"random", "champion"};
+static const char *const neat_weights_names[] = {"uniform", "neat-cpp"};
+static const char *const neat_elite_names[] = {"size", "offspring"};
+static const char *const neat_inter_names[] = {"uniform", "neat-cpp"};
+static const char *const neat_identical_names[] = {"same", "equal"};
+static const char *const neat_rounding_names[] = {"remainder", "skim"};
+static const char *const neat_speciate_names[] = {"after", "interleaved"};
+static const char *const neat_popstag_names[] = {"two-best", "delta-coding"};
 
 static const neat_cfg_key neat_keys[] = {
+    /* first: setting it sets the switches below (neat_params_set_profile), and an INI file delivers it before
+     * every other key (neat_ini.h), so a dump loads back unchanged */
+    NEAT_ENUM(profile, neat_profile_names, 2),
     NEAT_KEY(pop_size, NEAT_CFG_U32, 2, 1000000),
     NEAT_KEY(n_inputs, NEAT_CFG_U32, 0, 254),
     NEAT_KEY(n_outputs, NEAT_CFG_U32, 1, 255),
@@ -28,7 +44,7 @@ static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(target_species, NEAT_CFG_U32, 0, 1000000),
     NEAT_KEY(survival_fraction, NEAT_CFG_F64, 1e-9, 1),
     NEAT_KEY(elitism_min_size, NEAT_CFG_U32, 0, 1000000),
-    NEAT_ENUM(stagnation_rule, neat_stagnation_names, 2),
+    NEAT_ENUM(stagnation_rule, neat_stagnation_names, 3),
     NEAT_KEY(dropoff_age, NEAT_CFG_U32, 0, 1000000000),
     NEAT_KEY(stagnation_factor, NEAT_CFG_F64, 0, 1),
     NEAT_KEY(pop_stagnation, NEAT_CFG_U32, 0, 1000000000),
@@ -50,6 +66,20 @@ static const neat_cfg_key neat_keys[] = {
     NEAT_KEY(allow_recurrent, NEAT_CFG_BOOL, 0, 1),
     NEAT_KEY(max_nodes, NEAT_CFG_U32, 2, 256),
     NEAT_ENUM(net_step, neat_net_step_names, 2),
+    NEAT_ENUM(equal_fitness_rule, neat_equal_names, 2),
+    NEAT_ENUM(reenable_rule, neat_reenable_names, 2),
+    NEAT_ENUM(add_conn_rule, neat_add_conn_names, 2),
+    NEAT_KEY(recur_only_prob, NEAT_CFG_F64, 0, 1),
+    NEAT_ENUM(species_rep, neat_rep_names, 2),
+    NEAT_ENUM(weight_mut_rule, neat_weights_names, 2),
+    NEAT_ENUM(elitism_rule, neat_elite_names, 2),
+    NEAT_ENUM(interspecies_rule, neat_inter_names, 2),
+    NEAT_ENUM(identical_rule, neat_identical_names, 2),
+    NEAT_ENUM(offspring_rounding, neat_rounding_names, 2),
+    NEAT_ENUM(speciate_rule, neat_speciate_names, 2),
+    NEAT_KEY(cull_every, NEAT_CFG_U32, 0, 1000000000),
+    NEAT_KEY(cull_age, NEAT_CFG_U32, 0, 1000000000),
+    NEAT_ENUM(pop_stagnation_rule, neat_popstag_names, 2),
 };
 #define NEAT_N_KEYS (sizeof neat_keys / sizeof neat_keys[0])
 
@@ -211,6 +241,13 @@ int neat_config_has_key(const char *name)
 
 int neat_config_set(neat_params *p, const char *key, const char *value, char *err, size_t err_len)
 {
+    if (strcmp(key, "profile") == 0) {
+        /* a profile is a set of switches and values, not one field */
+        neat_params tmp = *p;
+        if (neat_config_parse_value(&neat_keys[0], &tmp, value, err, err_len) != 0)
+            return -1;
+        return neat_params_set_profile(p, tmp.profile) == NEAT_OK ? 0 : -1;
+    }
     return neat_config_set_in(neat_keys, NEAT_N_KEYS, p, key, value, err, err_len);
 }
 

@@ -35,8 +35,16 @@ static void ini_copy(char *dst, const char *b, const char *e)
     dst[e - b] = '\0';
 }
 
-int neat_ini_parse_text(const char *name, const char *text, size_t len, neat_ini_handler h, void *user, char *err,
-                        size_t err_len)
+/* [neat] profile comes first: it sets the switches every other [neat] key may refine */
+static int ini_first(const char *section, const char *key)
+{
+    return strcmp(section, "neat") == 0 && strcmp(key, "profile") == 0;
+}
+
+/* One pass over the text: pass 0 delivers only the keys ini_first names,
+ * pass 1 every other key; both check the whole syntax. */
+static int ini_pass(const char *name, const char *text, size_t len, neat_ini_handler h, void *user, char *err,
+                    size_t err_len, int pass)
 {
     /* the pairs seen so far: heap, a table of 512 * 2 KB does not belong on a stack */
     ini_seen *seen = NULL;
@@ -131,6 +139,8 @@ int neat_ini_parse_text(const char *name, const char *text, size_t len, neat_ini
         seen[n_seen].line = line;
         n_seen++;
         msg[0] = '\0';
+        if (ini_first(section, key) != (pass == 0))
+            continue;
         if (h(user, section, key, value, msg, sizeof msg) != 0) {
             snprintf(err, err_len, "%s:%u: %s", name, line, msg[0] ? msg : "refused");
             goto out;
@@ -140,6 +150,14 @@ int neat_ini_parse_text(const char *name, const char *text, size_t len, neat_ini
 out:
     free(seen);
     return status;
+}
+
+int neat_ini_parse_text(const char *name, const char *text, size_t len, neat_ini_handler h, void *user, char *err,
+                        size_t err_len)
+{
+    if (ini_pass(name, text, len, h, user, err, err_len, 0) != 0)
+        return -1;
+    return ini_pass(name, text, len, h, user, err, err_len, 1);
 }
 
 int neat_ini_parse_file(const char *path, neat_ini_handler h, void *user, char *err, size_t err_len)
