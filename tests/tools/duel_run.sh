@@ -115,6 +115,16 @@ config)
   # a corrupt checkpoint is refused with its offset, and nothing is lost
   printf 'garbage' | dd of="$tmp/once/checkpoint.bin" bs=1 seek=100 conv=notrunc 2>/dev/null
   expect_bad "checkpoint.bin: offset [0-9]*: " resume "$tmp/once"
+  # a profile among the overrides comes first, wherever it stands: the other overrides refine it
+  "$duel" config --dump --config "$cfg" --set add_conn_rule=any --set profile=neat-cpp-1.2.1 > "$tmp/p.ini"
+  grep -qx "add_conn_rule = any" "$tmp/p.ini" && grep -qx "species_rep = champion" "$tmp/p.ini" ||
+    { echo "config: the profile did not come first"; exit 1; }
+  "$duel" run --config "$cfg" --out "$tmp/prof" --quiet --generations 2 --set add_conn_rule=any \
+    --set neat.profile=neat-cpp-1.2.1
+  grep -qx "add_conn_rule = any" "$tmp/prof/config.ini" && grep -qx "profile = neat-cpp-1.2.1" "$tmp/prof/config.ini" ||
+    { echo "run: the profile did not come first"; exit 1; }
+  # and such a run resumes (its config.ini reads back to the same configuration)
+  "$duel" resume "$tmp/prof" --quiet --generations 3
   ;;
 ladder)
   "$duel" run --config "$cfg" --out "$tmp/l" --quiet --generations 4

@@ -1217,14 +1217,11 @@ static int duel_run_main(int argc, char **argv)
         fprintf(stderr, "duel_evolve: %s\n", err);
         return 2;
     }
-    for (k = 0; k < n_sets; k++)
-        if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
-            {
-                char esc[1100];
-                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
-            }
-            return 2;
-        }
+    if (duel_config_set_list(&R.cfg, (const char *const *)sets, n_sets, &k, err, sizeof err) != 0) {
+        char esc[1100];
+        fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
+        return 2;
+    }
     if (have_seed)
         R.cfg.seed = seed;
     if (have_gens)
@@ -1424,14 +1421,13 @@ static int duel_check_edits(const duel_config *config_ini, const neat_params *np
     size_t alen = 0, blen = 0;
     FILE *fa, *fb;
     int r = 0;
-    uint32_t k;
     ck.neat = *np;
     if (cp != NULL)
         ck.coev = *cp;
     /* a key this resume sets is a change made the right way, on both sides */
-    for (k = 0; k < n_sets; k++)
-        if (duel_config_set(&file, sets[k], err, sizeof err) != 0 || duel_config_set(&ck, sets[k], err, sizeof err) != 0)
-            return 2; /* not reached: the same overrides were applied before */
+    if (duel_config_set_list(&file, (const char *const *)sets, n_sets, NULL, err, sizeof err) != 0 ||
+        duel_config_set_list(&ck, (const char *const *)sets, n_sets, NULL, err, sizeof err) != 0)
+        return 2; /* not reached: the same overrides were applied before */
     fa = open_memstream(&a, &alen);
     fb = open_memstream(&b, &blen);
     if (fa == NULL || fb == NULL) {
@@ -1510,14 +1506,11 @@ static int duel_resume_main(int argc, char **argv)
     before = R.cfg;
     if (duel_take_lock(R.dir) != 0)
         return 2;
-    for (k = 0; k < n_sets; k++)
-        if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0) {
-            {
-                char esc[1100];
-                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
-            }
-            return 2;
-        }
+    if (duel_config_set_list(&R.cfg, (const char *const *)sets, n_sets, &k, err, sizeof err) != 0) {
+        char esc[1100];
+        fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
+        return 2;
+    }
     if (have_gens)
         R.cfg.generations = gens;
     /* the run's total changes only when asked: fewer generations than config.ini's needs --shorten */
@@ -1715,14 +1708,20 @@ int duel_cmd_config(int argc, char **argv)
             last = argv[i];
             from_set = 0;
         } else if (strcmp(argv[i], "--set") == 0 && i + 1 < argc) {
-            if (duel_config_set(&cfg, argv[++i], err, sizeof err) != 0) {
-                {
-                char esc[1100];
-                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(argv[i], esc, sizeof esc), err);
+            /* consecutive overrides together, a profile among them first (as run and resume apply theirs) */
+            const char *group[256];
+            uint32_t n = 0, bad;
+            while (i + 1 < argc && strcmp(argv[i], "--set") == 0 && n < 256) {
+                group[n++] = argv[i + 1];
+                i += 2;
             }
+            i--;
+            if (duel_config_set_list(&cfg, group, n, &bad, err, sizeof err) != 0) {
+                char esc[1100];
+                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(group[bad], esc, sizeof esc), err);
                 return 2;
             }
-            last = argv[i];
+            last = group[n - 1];
             from_set = 1;
         } else {
             fprintf(stderr, "duel_evolve config: unknown option '%s' (usage: duel_evolve config --dump [--config "

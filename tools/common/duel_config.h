@@ -78,6 +78,11 @@ int duel_config_load_text(duel_config *cfg, const char *name, const char *text, 
 /* One override, "key=value" or "section.key=value" (a bare key must name
  * one key of one section). -1 with a message in err. */
 int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t err_len);
+/* Applies n overrides as duel_config_set does, in order, except that a [neat] profile among them
+ * ("profile=NAME" or "neat.profile=NAME") comes first: a profile sets what the other keys refine, as
+ * in an INI file (neat_ini.h). 0, or -1 with err and *bad (if not NULL) the index of the refused one. */
+int duel_config_set_list(duel_config *cfg, const char *const *sets, uint32_t n, uint32_t *bad, char *err,
+                         size_t err_len);
 
 /* Every key of every section, in a form duel_config_load reads back to the
  * same configuration. */

@@ -213,6 +213,20 @@ static char *duel_plan_cfg_text(const duel_config *cfg)
     return text;
 }
 
+/* The plan's [all runs] overrides, then the method's, on cfg: one list, so that a profile among
+ * them comes first (duel_config_set_list). 0, or -1 with err. */
+static int duel_plan_apply_sets(const duel_plan *p, const duel_plan_method *m, duel_config *cfg, char *err,
+                                size_t err_len)
+{
+    const char *all[2 * DUEL_PLAN_MAX_SETS];
+    uint32_t k, n = 0;
+    for (k = 0; k < p->n_sets && n < 2 * DUEL_PLAN_MAX_SETS; k++)
+        all[n++] = p->sets[k];
+    for (k = 0; k < m->n_sets && n < 2 * DUEL_PLAN_MAX_SETS; k++)
+        all[n++] = m->sets[k];
+    return duel_config_set_list(cfg, all, n, NULL, err, err_len);
+}
+
 /* An experiment directory's plan.ini and its configs/NAME.ini must say the same: the configuration with plan.ini's
  * overrides applied again is the configuration. An edit of either after the experiment started would be ignored
  * (plan.ini) or taken by the runs not yet begun only (configs/): refused instead. 0, or -1 with err. */
@@ -221,13 +235,10 @@ static int duel_plan_agrees(const duel_plan *p, const duel_plan_method *m, const
 {
     duel_config c = m->cfg;
     char msg[1200], la[300], lb[300], *text;
-    uint32_t k, line;
-    for (k = 0; k < p->n_sets + m->n_sets; k++) {
-        const char *set = k < p->n_sets ? p->sets[k] : m->sets[k - p->n_sets];
-        if (duel_config_set(&c, set, msg, sizeof msg) != 0) {
-            snprintf(err, err_len, "[method %s]: plan.ini: %s", m->name, msg);
-            return -1;
-        }
+    uint32_t line;
+    if (duel_plan_apply_sets(p, m, &c, msg, sizeof msg) != 0) {
+        snprintf(err, err_len, "[method %s]: plan.ini: %s", m->name, msg);
+        return -1;
     }
     c.seed = p->seed;
     if (m->start_best) {
@@ -279,7 +290,7 @@ static int duel_plan_same_preset(const duel_plan_method *m, const char *path, ch
 /* Every method's configuration: its preset (or, from_dir, DIR/configs/NAME.ini), [all runs], its keys. */
 static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *err, size_t err_len)
 {
-    uint32_t i, k;
+    uint32_t i;
     char path[8400], msg[1200];
     for (i = 0; i < p->n_methods; i++) {
         duel_plan_method *m = &p->m[i];
@@ -298,12 +309,9 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
             snprintf(err, err_len, "[method %s]: %s", m->name, msg);
             return -1;
         }
-        for (k = 0; !from_dir && k < p->n_sets + m->n_sets; k++) {
-            const char *set = k < p->n_sets ? p->sets[k] : m->sets[k - p->n_sets];
-            if (duel_config_set(&m->cfg, set, msg, sizeof msg) != 0) {
-                snprintf(err, err_len, "[method %s]: %s", m->name, msg);
-                return -1;
-            }
+        if (!from_dir && duel_plan_apply_sets(p, m, &m->cfg, msg, sizeof msg) != 0) {
+            snprintf(err, err_len, "[method %s]: %s", m->name, msg);
+            return -1;
         }
         if (!from_dir) {
             m->cfg.seed = p->seed;
