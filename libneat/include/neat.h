@@ -241,6 +241,11 @@ NEAT_API neat_params neat_params_neat_cpp(void);
  * NEAT_PROFILE_DEFAULT), leaving every other value of *p as it is.
  * NEAT_E_ARG for an unknown profile. */
 NEAT_API int neat_params_set_profile(neat_params *p, int profile);
+/* 1 if p uses any of NEAT C++ 1.2.1's rules (a switch, the profile, or
+ * recur_only_prob, cull_every, cull_age away from neat_params_default's),
+ * else 0: then its checkpoints and configuration dumps are written as
+ * before the switches existed, byte for byte. */
+NEAT_API int neat_params_uses_neat_cpp(const neat_params *p);
 /* NEAT_OK, or NEAT_E_PARAM with *field set to the offending field's name. */
 NEAT_API int neat_params_check(const neat_params *p, const char **field);
 

@@ -11,20 +11,11 @@ static const uint8_t neat_ckpt_magic[8] = {'N', 'E', 'A', 'T', 'C', 'K', 'P', 'T
  * that every checkpoint of the default rules keeps its bytes. */
 static int neat_ckpt_needs_v4(const neat_pop *pop)
 {
-    const neat_params *p = &pop->p;
-    neat_params d = neat_params_default();
     uint32_t k;
     for (k = 0; k < pop->n_species; k++)
         if (pop->species[k].culled)
             return 1;
-    return p->profile != d.profile || p->equal_fitness_rule != d.equal_fitness_rule ||
-           p->reenable_rule != d.reenable_rule || p->add_conn_rule != d.add_conn_rule ||
-           p->recur_only_prob != d.recur_only_prob || p->species_rep != d.species_rep ||
-           p->weight_mut_rule != d.weight_mut_rule || p->elitism_rule != d.elitism_rule ||
-           p->interspecies_rule != d.interspecies_rule || p->identical_rule != d.identical_rule ||
-           p->offspring_rounding != d.offspring_rounding || p->speciate_rule != d.speciate_rule ||
-           p->cull_every != d.cull_every || p->cull_age != d.cull_age ||
-           p->pop_stagnation_rule != d.pop_stagnation_rule || p->stagnation_rule == NEAT_STAGNATION_CPP;
+    return neat_params_uses_neat_cpp(&pop->p);
 }
 
 /* ---- parameters: one fixed order, the struct's ---- */

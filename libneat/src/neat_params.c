@@ -91,6 +91,19 @@ int neat_params_set_profile(neat_params *p, int profile)
     return NEAT_OK;
 }
 
+int neat_params_uses_neat_cpp(const neat_params *p)
+{
+    neat_params d = neat_params_default();
+    return p->profile != d.profile || p->equal_fitness_rule != d.equal_fitness_rule ||
+           p->reenable_rule != d.reenable_rule || p->add_conn_rule != d.add_conn_rule ||
+           p->recur_only_prob != d.recur_only_prob || p->species_rep != d.species_rep ||
+           p->weight_mut_rule != d.weight_mut_rule || p->elitism_rule != d.elitism_rule ||
+           p->interspecies_rule != d.interspecies_rule || p->identical_rule != d.identical_rule ||
+           p->offspring_rounding != d.offspring_rounding || p->speciate_rule != d.speciate_rule ||
+           p->cull_every != d.cull_every || p->cull_age != d.cull_age ||
+           p->pop_stagnation_rule != d.pop_stagnation_rule || p->stagnation_rule == NEAT_STAGNATION_CPP;
+}
+
 neat_params neat_params_neat_cpp(void)
 {
     neat_params p = neat_params_default();

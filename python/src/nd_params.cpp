@@ -142,12 +142,20 @@ void nd_bind_params(nb::module_ &m)
         "__init__",
         [](nd_params *self, nb::kwargs kw) {
             new (self) nd_params();
-            for (auto item : kw)
-                nd_set(*self, nb::cast<std::string>(item.first), item.second);
+            // a profile first, wherever it stands: it sets what the other keywords refine (as in an INI file)
+            if (kw.contains("profile"))
+                nd_set(*self, "profile", kw["profile"]);
+            for (auto item : kw) {
+                std::string key = nb::cast<std::string>(item.first);
+                if (key != "profile")
+                    nd_set(*self, key, item.second);
+            }
             nd_check(*self);
         },
         nb::sig("def __init__(self, **kwargs: int | float | bool | str) -> None"),
-        "Appendix A's values, with the keywords given set (ParamError if one is unknown or out of range).");
+        "Appendix A's values, with the keywords given set (ParamError if one is unknown or out of range).\n"
+        "profile='neat-cpp-1.2.1' sets NEAT C++ 1.2.1's rules first, wherever it stands; the other keywords\n"
+        "refine it (docs/parameters.md, \"NEAT C++ 1.2.1\").");
     size_t n;
     const neat_cfg_key *keys = neat_config_keys(&n);
     for (size_t i = 0; i < n; i++) {
@@ -249,9 +257,15 @@ void nd_bind_params(nb::module_ &m)
                 bool first = true;
                 nd_params def;
                 def.p = d;
+                if (s.p.profile != d.profile) {
+                    // the profile first, and the rest told apart from what the profile gives: eval(repr(p)) == p
+                    r += "profile=" + nb::cast<std::string>(nb::repr(nd_get(s, &ks[0])));
+                    first = false;
+                    (void)neat_params_set_profile(&def.p, s.p.profile);
+                }
                 for (size_t i = 0; i < nk; i++) {
                     nb::object a = nd_get(s, &ks[i]), b = nd_get(def, &ks[i]);
-                    if (a.equal(b))
+                    if (a.equal(b) || std::strcmp(ks[i].name, "profile") == 0)
                         continue;
                     r += (first ? "" : ", ") + std::string(ks[i].name) + "=" + nb::cast<std::string>(nb::repr(a));
                     first = false;

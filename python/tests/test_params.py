@@ -90,3 +90,22 @@ def test_ini_errors_name_file_and_line(tmp_path: pathlib.Path) -> None:
         nd.Params.from_ini(str(tmp_path / "missing.ini"))
     with pytest.raises(nd.FormatError, match="not a regular file"):
         nd.Params.from_ini(str(tmp_path))
+
+
+def test_neat_cpp_profile_first_wherever_it_stands() -> None:
+    # the profile sets NEAT C++ 1.2.1's rules; the other keywords refine it, before or after it
+    p = nd.Params(add_conn_rule="any", profile="neat-cpp-1.2.1", add_node_prob=0.0025)
+    assert p.profile == "neat-cpp-1.2.1" and p.add_conn_rule == "any" and p.add_node_prob == 0.0025
+    assert (p.equal_fitness_rule, p.species_rep, p.speciate_rule, p.stagnation_rule) == (
+        "smaller", "champion", "interleaved", "neat-cpp")
+    assert p.dropoff_age == 1000 and p.recur_only_prob == 0.2 and p.pop_stagnation == 0
+    assert nd.Params(**p.to_dict()) == p
+    assert eval("nd." + repr(p)) == p
+    # setting it as an attribute applies it then, over what was set before
+    q = nd.Params(add_conn_rule="any")
+    q.profile = "neat-cpp-1.2.1"
+    assert q.add_conn_rule == "neat-cpp"
+    q.profile = "default"
+    assert q == nd.Params()
+    with pytest.raises(nd.ParamError, match="expected one of default, neat-cpp-1.2.1"):
+        nd.Params(profile="neat-cpp")

@@ -74,6 +74,11 @@ profile)
   cmp "$tmp/p.dump" "$tmp/p2.dump"
   # the values the profile does not set stay the file's and the defaults'
   grep -qx "pop_size = 256" "$tmp/p.dump" && grep -qx "add_node_prob = 0.01" "$tmp/p.dump" || { echo "pop_size changed by the profile"; exit 1; }
+  # a configuration without the release's rules dumps as before they existed: net_step is its last key
+  "$bench" xor --dump-config | tail -1 | grep -qx "net_step = sync" || { echo "the default dump changed"; exit 1; }
+  ! "$bench" xor --dump-config | grep -q "^profile\|^equal_fitness_rule\|^pop_stagnation_rule\|^cull_" || { echo "release keys in a default dump"; exit 1; }
+  printf '[neat]\ncull_age = 21\n' > "$tmp/one.ini"
+  "$bench" xor --config "$tmp/one.ini" --dump-config | grep -qx "cull_age = 21" || { echo "a lone switch not dumped"; exit 1; }
   printf '[neat]\nprofile = neat-cpp\n' > "$tmp/bad.ini"
   set +e
   msg=$("$bench" xor --config "$tmp/bad.ini" 2>&1 >/dev/null); rc=$?

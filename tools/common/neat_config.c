@@ -291,5 +291,14 @@ void neat_config_dump_keys(FILE *out, const neat_cfg_key *keys, size_t n_keys, c
 
 void neat_config_dump(FILE *out, const neat_params *p)
 {
-    neat_config_dump_keys(out, neat_keys, NEAT_N_KEYS, p);
+    /* The keys of NEAT C++ 1.2.1's rules are the table's first (profile) and those from
+     * equal_fitness_rule on. A configuration that uses none of them is written as before they existed,
+     * byte for byte (run directories' config.ini, experiments' configs/NAME.ini, which resume compares). */
+    size_t tail = 1;
+    while (tail < NEAT_N_KEYS && strcmp(neat_keys[tail].name, "equal_fitness_rule") != 0)
+        tail++;
+    if (neat_params_uses_neat_cpp(p))
+        neat_config_dump_keys(out, neat_keys, NEAT_N_KEYS, p);
+    else
+        neat_config_dump_keys(out, neat_keys + 1, tail - 1, p);
 }
