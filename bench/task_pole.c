@@ -4,48 +4,7 @@
 #include <stdlib.h>
 
 #include "bench.h"
-#include "cartpole.h"
-#include "neat_phenotype.h"
-
-/* Network inputs, scaled as in the C++ release; input 0 is the bias. */
-static void pole_inputs(const cartpole *c, int markov, nrt_q15 *in)
-{
-    in[0] = NRT_ONE;
-    if (markov) {
-        in[1] = neat_q15(c->s[0] / 4.8);
-        in[2] = neat_q15(c->s[1] / 2.0);
-        in[3] = neat_q15(c->s[2] / 0.52);
-        in[4] = neat_q15(c->s[3] / 2.0);
-        in[5] = neat_q15(c->s[4] / 0.52);
-        in[6] = neat_q15(c->s[5] / 2.0);
-    } else {
-        in[1] = neat_q15(c->s[0] / 4.8);
-        in[2] = neat_q15(c->s[2] / 0.52);
-        in[3] = neat_q15(c->s[4] / 0.52);
-    }
-}
-
-/* One network action: output in (0, 1) -> force in (-10, 10) N. */
-static void pole_step(neat_phenotype *ph, cartpole *c, int markov)
-{
-    nrt_q15 in[7], out[1];
-    pole_inputs(c, markov, in);
-    nrt_step(&ph->net, in, out);
-    cartpole_act(c, (neat_from_q15(out[0]) - 0.5) * 20.0);
-}
-
-/* Steps balanced from state c (network reset first), at most max_steps. */
-static uint32_t pole_balance(neat_phenotype *ph, cartpole *c, int markov, uint32_t max_steps)
-{
-    uint32_t t;
-    nrt_reset(&ph->net);
-    for (t = 0; t < max_steps; t++) {
-        pole_step(ph, c, markov);
-        if (cartpole_failed(c))
-            return t;
-    }
-    return max_steps;
-}
+#include "bench_eval.h"
 
 /* Gruau's damping fitness: 0.1 f1 + 0.9 f2, f1 = steps / window,
  * f2 = 0.75 / sum over the last 100 steps of |x| + |x'| + |th1| + |th1'|
@@ -60,7 +19,7 @@ static double pole_damping_fitness(neat_phenotype *ph, uint32_t window)
     cartpole_init(&c);
     nrt_reset(&ph->net);
     for (t = 0; t < window; t++) {
-        pole_step(ph, &c, 0);
+        bench_pole_step(ph, &c, 0);
         jiggle[t % 101] = fabs(c.s[0]) + fabs(c.s[1]) + fabs(c.s[2]) + fabs(c.s[3]);
         if (cartpole_failed(&c)) {
             balanced = t;
@@ -91,7 +50,7 @@ static uint32_t pole_generalization(neat_phenotype *ph, uint32_t steps)
                     c.s[1] = v[b] * 2.70 - 1.35;
                     c.s[2] = v[cc] * 0.12566304 - 0.06283152;
                     c.s[3] = v[d] * 0.30019504 - 0.15009752;
-                    if (pole_balance(ph, &c, 0, steps) >= steps - 1)
+                    if (bench_pole_balance(ph, &c, 0, steps) >= steps - 1)
                         ok++;
                 }
     return ok;
@@ -174,9 +133,7 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
                 break;
             evals++;
             if (markov) {
-                cartpole c;
-                cartpole_init(&c);
-                f = pole_balance(&ph, &c, 1, cfg->balance_steps);
+                f = bench_pole_markov(&ph, cfg->balance_steps);
                 if (f >= cfg->balance_steps)
                     bench_solved(res, g, evals, gen);
             } else {
@@ -194,7 +151,7 @@ int task_pole_run(const bench_cfg *cfg, uint64_t seed, int markov, bench_result 
             cartpole c;
             cartpole_init(&c);
             if (g != NULL)
-                steps = pole_balance(&ph, &c, 0, cfg->balance_steps);
+                steps = bench_pole_balance(&ph, &c, 0, cfg->balance_steps);
             if (g != NULL && steps >= cfg->balance_steps) {
                 gz = pole_generalization(&ph, 1000);
                 if (gz >= cfg->generalization_min) {

@@ -1,32 +1,6 @@
 /* task_xor.c - XOR (NEAT paper, 2002): fitness (4 - error)^2, solved when all four outputs round right. */
-#include <math.h>
-
 #include "bench.h"
-#include "neat_phenotype.h"
-
-/* Fitness of one network, and whether it solves XOR. */
-static int xor_eval(neat_phenotype *ph, double *fitness)
-{
-    static const int pat[4][3] = {{0, 0, 0}, {0, 1, 1}, {1, 0, 1}, {1, 1, 0}};
-    double err = 0.0;
-    int k, correct = 1;
-    for (k = 0; k < 4; k++) {
-        nrt_q15 in[3], out[1];
-        double o;
-        in[0] = NRT_ONE;
-        in[1] = pat[k][0] ? NRT_ONE : 0;
-        in[2] = pat[k][1] ? NRT_ONE : 0;
-        nrt_reset(&ph->net);
-        /* feed-forward: propagate until nothing changes (depth <= nodes) */
-        (void)nrt_settle(&ph->net, in, out, ph->net.n_nodes + 1);
-        o = neat_from_q15(out[0]);
-        err += fabs(o - pat[k][2]);
-        if ((o >= 0.5) != (pat[k][2] == 1))
-            correct = 0;
-    }
-    *fitness = (4.0 - err) * (4.0 - err);
-    return correct;
-}
+#include "bench_eval.h"
 
 int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res)
 {
@@ -48,7 +22,7 @@ int task_xor_run(const bench_cfg *cfg, uint64_t seed, bench_result *res)
             err = neat_phenotype_load(&ph, g, &cfg->neat);
             if (err)
                 break;
-            solved = xor_eval(&ph, &f);
+            solved = bench_xor_eval(&ph, &f);
             evals++;
             err = neat_pop_set_fitness(pop, i, f);
             if (solved && !res->solved)

@@ -13,7 +13,7 @@ from conftest import ROOT, XOR, program
 
 
 def xor_eval(net: nd.Network) -> tuple[float, bool]:
-    """bench/task_xor.c's xor_eval, line for line."""
+    """bench/bench_eval.c's bench_xor_eval, line for line."""
     err, correct = 0.0, True
     for a, b, y in XOR:
         net.reset()

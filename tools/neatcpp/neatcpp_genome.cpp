@@ -1,0 +1,75 @@
+// neatcpp_genome.cpp - NEAT::Genome -> neat_genome: node ids renumbered to libneat's layout, genes in their order.
+#include "neatcpp_genome.h"
+
+#include <map>
+#include <vector>
+
+#include "gene.h"
+#include "genome.h"
+#include "link.h"
+#include "nnode.h"
+
+int neatcpp_genome_shape(const NEAT::Genome *g, uint32_t *n_inputs, uint32_t *n_outputs)
+{
+    uint32_t bias = 0, in = 0, out = 0;
+    for (std::vector<NEAT::NNode *>::const_iterator it = g->nodes.begin(); it != g->nodes.end(); ++it) {
+        switch ((*it)->gen_node_label) {
+        case NEAT::BIAS: bias++; break;
+        case NEAT::INPUT: in++; break;
+        case NEAT::OUTPUT: out++; break;
+        default: break;
+        }
+    }
+    *n_inputs = in;
+    *n_outputs = out;
+    return bias == 1 && out > 0 ? NEAT_OK : NEAT_E_ARG;
+}
+
+int neatcpp_genome_convert(const NEAT::Genome *g, neat_genome *out, uint32_t *clamped)
+{
+    // the release's node_id -> our id; its nodes are kept sorted by node_id,
+    // and genes point at them (gene.h: lnk->in_node, lnk->out_node)
+    std::map<int, uint32_t> id;
+    uint32_t n_in = 0, n_out = 0, next_in = 1, next_out, next_hidden, innov = 0;
+    int err = neatcpp_genome_shape(g, &n_in, &n_out);
+
+    neat_genome_init(out);
+    if (err)
+        return err;
+    next_out = n_in + 1;
+    next_hidden = n_in + n_out + 1;
+    for (std::vector<NEAT::NNode *>::const_iterator it = g->nodes.begin(); it != g->nodes.end() && !err; ++it) {
+        uint32_t ours;
+        int type;
+        switch ((*it)->gen_node_label) {
+        case NEAT::BIAS: ours = 0; type = NEAT_NODE_BIAS; break;
+        case NEAT::INPUT: ours = next_in++; type = NEAT_NODE_INPUT; break;
+        case NEAT::OUTPUT: ours = next_out++; type = NEAT_NODE_OUTPUT; break;
+        default: ours = next_hidden++; type = NEAT_NODE_HIDDEN; break;
+        }
+        if (id.count((*it)->node_id))
+            err = NEAT_E_ARG; // two nodes with one id: not a genome the release made
+        else
+            err = neat_genome_add_node(out, ours, type, NULL);
+        id[(*it)->node_id] = ours;
+    }
+    for (std::vector<NEAT::Gene *>::const_iterator it = g->genes.begin(); it != g->genes.end() && !err; ++it) {
+        const NEAT::Link *l = (*it)->lnk;
+        std::map<int, uint32_t>::const_iterator a = id.find(l->in_node->node_id), b = id.find(l->out_node->node_id);
+        double w = l->weight;
+        if (a == id.end() || b == id.end()) {
+            err = NEAT_E_ARG;
+            break;
+        }
+        // the blob stores Q3.12 (it saturates just inside +-8 anyway); a weight
+        // beyond 8 would mean the two engines' networks differ by more than rounding
+        if (w > 8.0 || w < -8.0) {
+            w = w > 0 ? 8.0 : -8.0;
+            ++*clamped;
+        }
+        err = neat_genome_add_conn(out, a->second, b->second, w, innov++, (*it)->enable ? 1 : 0, NULL);
+    }
+    if (err)
+        neat_genome_free(out, NULL);
+    return err;
+}
