@@ -51,6 +51,9 @@ target_link_libraries(test_dominance PRIVATE duelfiles)
 neat_add_test(tools test_stats)
 target_link_libraries(test_stats PRIVATE duelstats)
 
+# the statistics of the registered comparisons (scripts/neat_stats.py: docs/neat-cpp.md, docs/study2.md)
+add_test(NAME tools/neat_stats COMMAND ${DUEL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/tools/test_neat_stats.py)
+
 # neat_bench from the outside (shell: exit codes, messages, thread independence)
 foreach(check bad-config dump-roundtrip threads built-in affinity profile)
   add_test(NAME tools/neat_bench_${check}

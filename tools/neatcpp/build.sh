@@ -1,5 +1,5 @@
 #!/bin/sh
-# build.sh - builds neatcpp_bench (docs/neatcpp.md) against a checkout of the NEAT C++ 1.2.1 release.
+# build.sh - builds neatcpp_bench (docs/neat-cpp.md) against a checkout of the NEAT C++ 1.2.1 release.
 # usage: tools/neatcpp/build.sh CHECKOUT [BUILD_DIR]   (BUILD_DIR default: build-neatcpp, in the current directory)
 # The release's sources are compiled from CHECKOUT as they are; nothing of it is copied into this tree. The build is
 # the smallest that makes neatcpp_bench: libneat, the runtime, the benchmark evaluators (no tools, no tests).

@@ -3,12 +3,13 @@
 // The release keeps its state in globals (parameters, rand(), a spare
 // Gaussian deviate): one process runs its runs one after another, and every
 // run starts from the same state (neatcpp_release_reset), so a run's result
-// does not depend on the runs before it (docs/neatcpp.md).
+// does not depend on the runs before it (docs/neat-cpp.md).
 #include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include <algorithm>
@@ -87,7 +88,7 @@ void usage(FILE *f)
             "  --max-generations G   default 100 (xor), 1000 (pole)\n"
             "  --max-evaluations E   default none (xor), 100000 (pole), checked after each generation\n"
             "  --set key=value       libneat: a [neat] key over the mapped parameters; release: net_step only\n"
-            "  --profile NAME        libneat: neat_params_profile(NAME) before the --set keys\n"
+            "  --profile NAME        libneat: the profile's rules (neat-cpp-1.2.1) with the file's values, before --set\n"
             "  --eval native         release: its own evaluation (experiments.cpp) as a context row\n"
             "Writes DIR/runs.csv and DIR/generations.csv; one summary line on stdout.\n"
             "Built against the release at " NEATCPP_DIR "\n");
@@ -427,15 +428,16 @@ int libneat_params(const options &o, const neatcpp_ne &ne, uint32_t n_in, uint32
     const char *field = NULL;
     *p = neatcpp_params_from_ne(&ne, n_in, n_out);
     if (!o.profile.empty()) {
-#ifdef NEAT_HAVE_PROFILES
-        if (neat_params_profile(p, o.profile.c_str()) != 0) {
-            fprintf(stderr, "neatcpp_bench: unknown profile '%s'\n", o.profile.c_str());
+        // The profile's rules, with the file's values: it brings its own dropoff_age, pop_stagnation and
+        // recur_only_prob (params256.ne's and the coevolution's), which the file sets here
+        neat_params file = *p;
+        if (neat_config_set(p, "profile", o.profile.c_str(), err, sizeof err) != 0) {
+            fprintf(stderr, "neatcpp_bench: --profile %s: %s\n", o.profile.c_str(), err);
             return -1;
         }
-#else
-        fprintf(stderr, "neatcpp_bench: --profile: this libneat has no neat_params_profile (NEAT_HAVE_PROFILES)\n");
-        return -1;
-#endif
+        p->dropoff_age = file.dropoff_age;
+        p->pop_stagnation = file.pop_stagnation; // the release's dropoff_age + 5
+        p->recur_only_prob = file.recur_only_prob;
     }
     for (size_t i = 0; i < o.sets.size(); i++) {
         std::string kv = o.sets[i];
@@ -543,6 +545,15 @@ int bench_main(int argc, char **argv)
 
     std::string runs_path = o.out + "/runs.csv", gens_path = o.out + "/generations.csv";
     out_files of;
+    // the directory itself, and its parents (mkdir -p), so that a fresh DIR needs no step of its own
+    for (size_t at = 1; at <= o.out.size(); at++)
+        if (at == o.out.size() || o.out[at] == '/') {
+            std::string part = o.out.substr(0, at);
+            if (mkdir(part.c_str(), 0777) != 0 && errno != EEXIST) {
+                fprintf(stderr, "neatcpp_bench: cannot make %s: %s\n", part.c_str(), strerror(errno));
+                return 1;
+            }
+        }
     of.runs = open_tmp(runs_path);
     of.gens = of.runs ? open_tmp(gens_path) : NULL;
     if (of.gens == NULL)

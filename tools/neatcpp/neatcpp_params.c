@@ -89,7 +89,7 @@ neat_params neatcpp_params_from_ne(const neatcpp_ne *ne, uint32_t n_inputs, uint
     p.survival_fraction = v[NE_SURVIVAL_THRESH];
     /* [species.cpp Species::adjust_fitness: fitness * 0.01 once a species has gone
      * dropoff_age - 1 generations without improving (age - age_of_last_improvement + 1
-     * >= dropoff_age), the best species included; see docs/neatcpp.md] */
+     * >= dropoff_age), the best species included; see docs/neat-cpp.md] */
     p.stagnation_rule = NEAT_STAGNATION_IMPROVEMENT;
     p.dropoff_age = (uint32_t)v[NE_DROPOFF_AGE];
     p.stagnation_factor = 0.01;
@@ -123,5 +123,7 @@ neat_params neatcpp_params_from_ne(const neatcpp_ne *ne, uint32_t n_inputs, uint
     /* [genome.cpp Genome::mutate_add_link: recurrent links only with recur_only_prob;
      * recur_prob is read but used nowhere (its line is commented out)] */
     p.allow_recurrent = v[NE_RECUR_PROB] > 0 || v[NE_RECUR_ONLY_PROB] > 0;
+    /* the same, for add_conn_rule = neat-cpp (libneat's own rule ignores it) */
+    p.recur_only_prob = v[NE_RECUR_ONLY_PROB];
     return p;
 }

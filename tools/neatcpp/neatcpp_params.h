@@ -35,7 +35,7 @@ const char *neatcpp_ne_name(int k);
 /* Reads path as the release does (positional pairs), stricter: every value
  * must be a number, the integer ones integers. 0, or -1 with err. */
 int neatcpp_ne_read(const char *path, neatcpp_ne *ne, char *err, size_t err_len);
-/* libneat's parameters for the same run (docs/neatcpp.md has the table):
+/* libneat's parameters for the same run (docs/neat-cpp.md has the table):
  * neat_params_default() with every value the release has a counterpart
  * for replaced. n_inputs and n_outputs come from the start genome. */
 neat_params neatcpp_params_from_ne(const neatcpp_ne *ne, uint32_t n_inputs, uint32_t n_outputs);
