@@ -28,14 +28,14 @@ def _ranks(values):
 
 def mann_whitney(a, b):
     """Two-sided p of the Mann-Whitney test of a against b: exact (every split of the pooled values) when there are
-    at most 20 values in all, else the normal approximation with the tie correction and a continuity correction of
-    1/2. Returns (U, p); p is 1.0 when either sample is empty."""
+    at most 50,000 splits (5 against 5: 252; 9 against 9: 48,620), else the normal approximation with the tie
+    correction and a continuity correction of 1/2. Returns (U, p); p is 1.0 when either sample is empty."""
     n1, n2 = len(a), len(b)
     if n1 == 0 or n2 == 0:
         return float("nan"), 1.0
     u = u_stat(a, b)
     mean = n1 * n2 / 2.0
-    if n1 + n2 <= 20:
+    if math.comb(n1 + n2, n1) <= 50000:
         pooled = list(a) + list(b)
         obs = abs(u - mean)
         hits = total = 0
