@@ -402,6 +402,23 @@ NEAT_API uint32_t neat_pop_innovations(const neat_pop *pop); /* innovation numbe
  * n_inputs or n_outputs, or max_nodes is below a genome's size. */
 NEAT_API int neat_pop_set_params(neat_pop *pop, const neat_params *p);
 
+/* A generation made by another NEAT's reproduction (NEAT C++ 1.2.1's own,
+ * in docs/neat-cpp.md): genomes[0..n-1] (n = pop_size) become the
+ * population's, copied, and label[i] names genome i's species (the same
+ * label, the same species; a label that was a species of the population's
+ * last generation keeps its age and record; the labels become the species'
+ * ids). evaluated 1: after every genome of the current generation has its
+ * fitness, in place of neat_pop_epoch (the best of the generation and the
+ * best ever are kept as an epoch keeps them; the generation counter
+ * advances); evaluated 0: replaces the current, unevaluated generation (a
+ * start made elsewhere). The counters move past every node id and
+ * innovation number the genomes use. NEAT_E_ARG for a genome not of the
+ * population's shape or larger than max_nodes, or a label at the counters'
+ * limit; NEAT_E_FITNESS; NEAT_E_NOMEM: on every error the population is
+ * unchanged. */
+NEAT_API int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *label, uint32_t n,
+                              int evaluated);
+
 /* ---- checkpoints (docs/formats.md) --------------------------------------
  * The whole state: parameters, genomes, species, delta_t, innovation list,
  * counters, PRNG, generation, fitness. Loading it and running on gives the

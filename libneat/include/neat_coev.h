@@ -131,6 +131,18 @@ typedef struct neat_dominant {
 NEAT_API uint32_t neat_coev_dominant_count(const neat_coev *c);
 NEAT_API int neat_coev_dominant(const neat_coev *c, uint32_t k, neat_dominant *d);
 
+/* Reproduction by another NEAT (NEAT C++ 1.2.1's own, docs/neat-cpp.md):
+ * fn(ud, which, pop, evaluated) makes population `which`'s next generation
+ * with neat_pop_replace(pop, ..., evaluated) in place of neat_pop_epoch.
+ * Called at once for both populations with evaluated 0 (the other NEAT's
+ * start replaces the created one), then in every neat_coev_step with
+ * evaluated 1, on a copy of the population whose genomes carry this
+ * generation's fitness (wins). fn returns 0 or a negative code, which
+ * fails the step. Not kept in checkpoints: a coevolution loaded from one
+ * reproduces with libneat unless set again. NULL fn: libneat's own. */
+typedef int (*neat_coev_reproduce_fn)(void *ud, uint32_t which, neat_pop *pop, int evaluated);
+NEAT_API int neat_coev_set_reproducer(neat_coev *c, neat_coev_reproduce_fn fn, void *ud);
+
 /* New parameters for a resumed run: both populations' (pop_size, inputs and
  * outputs cannot change; pop_stagnation must stay 0) and the protocol's. */
 NEAT_API int neat_coev_set_params(neat_coev *c, const neat_params *p, const neat_coev_params *cp);

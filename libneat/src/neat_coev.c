@@ -34,6 +34,8 @@ struct neat_coev {
     neat_game *games; /* scratch for a generation's games */
     uint32_t cap_games;
     neat_tag game;    /* neat_coev_set_game's bytes */
+    neat_coev_reproduce_fn reproduce; /* another NEAT's reproduction, or NULL */
+    void *reproduce_ud;
 };
 
 /* seed-derivation tags, so the streams of different purposes never meet */
@@ -611,7 +613,7 @@ int neat_coev_step(neat_coev *c, neat_play_fn play, void *ud, neat_coev_report *
         for (h = 0; h < size && !err; h++)
             err = neat_pop_set_fitness(next[p], h, (double)wins[p][h]);
         if (!err)
-            err = neat_pop_epoch(next[p]);
+            err = c->reproduce != NULL ? c->reproduce(c->reproduce_ud, p, next[p], 1) : neat_pop_epoch(next[p]);
     }
     if (err)
         goto done;
@@ -660,6 +662,19 @@ done:
         neat_mem_free(&c->a, wins[p], size * sizeof(uint32_t));
     }
     neat_mem_free(&c->a, idx, 2u * size * sizeof(uint32_t));
+    return err;
+}
+
+int neat_coev_set_reproducer(neat_coev *c, neat_coev_reproduce_fn fn, void *ud)
+{
+    uint32_t p;
+    int err = NEAT_OK;
+    if (c == NULL)
+        return NEAT_E_ARG;
+    c->reproduce = fn;
+    c->reproduce_ud = ud;
+    for (p = 0; p < 2 && fn != NULL && !err; p++)
+        err = fn(ud, p, c->pop[p], 0);
     return err;
 }
 

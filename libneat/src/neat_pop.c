@@ -330,3 +330,132 @@ int neat_pop_set_params(neat_pop *pop, const neat_params *p)
     pop->p = *p;
     return NEAT_OK;
 }
+
+int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *label, uint32_t n, int evaluated)
+{
+    uint32_t i, k, j, best = 0, n_sp = 0, node = 0, innov = 0, next_id;
+    neat_genome *next = NULL, last, ever;
+    neat_species *sp = NULL;
+    int err = NEAT_OK, improved = 0;
+
+    if (pop == NULL || genomes == NULL || label == NULL || n != pop->p.pop_size)
+        return NEAT_E_ARG;
+    for (i = 0; i < n; i++) {
+        const neat_genome *g = &genomes[i];
+        if (!neat_genome_io_ok(g, pop->p.n_inputs, pop->p.n_outputs) || g->n_nodes > pop->p.max_nodes ||
+            label[i] >= NEAT_COUNTER_MAX - n)
+            return NEAT_E_ARG;
+        if (g->nodes[g->n_nodes - 1].id > node)
+            node = g->nodes[g->n_nodes - 1].id;
+        if (g->n_conns > 0 && g->conns[g->n_conns - 1].innov > innov)
+            innov = g->conns[g->n_conns - 1].innov;
+        if (evaluated && !pop->genomes[i].has_fitness) {
+            pop->err_index = i;
+            return NEAT_E_FITNESS;
+        }
+        if (evaluated && pop->genomes[i].fitness > pop->genomes[best].fitness)
+            best = i;
+    }
+    if (node >= NEAT_COUNTER_MAX - 3u * n || innov >= NEAT_COUNTER_MAX - 3u * n)
+        return NEAT_E_ARG;
+    neat_genome_init(&last);
+    neat_genome_init(&ever);
+    if (evaluated) {
+        improved = !pop->have_best || pop->genomes[best].fitness > pop->best_ever.fitness;
+        err = neat_genome_copy(&last, &pop->genomes[best], &pop->a);
+        if (!err && improved)
+            err = neat_genome_copy(&ever, &pop->genomes[best], &pop->a);
+    }
+    /* everything that can fail, on new storage; the commit below cannot */
+    if (!err) {
+        next = (neat_genome *)neat_mem_realloc(&pop->a, NULL, 0, (size_t)n * sizeof(neat_genome));
+        sp = (neat_species *)neat_mem_realloc(&pop->a, NULL, 0, (size_t)n * sizeof(neat_species));
+        if (next == NULL || sp == NULL)
+            err = NEAT_E_NOMEM;
+        else
+            for (i = 0; i < n; i++)
+                neat_genome_init(&next[i]);
+    }
+    for (i = 0; i < n && !err; i++)
+        err = neat_genome_copy(&next[i], &genomes[i], &pop->a);
+    for (i = 0; i < n && !err; i++) {
+        for (k = 0; k < n_sp && sp[k].id != label[i]; k++)
+            ;
+        if (k == n_sp) {
+            /* a species: its members counted first, its representative its first member */
+            uint32_t count = 0;
+            memset(&sp[k], 0, sizeof sp[k]);
+            sp[k].id = label[i];
+            for (j = i; j < n; j++)
+                count += label[j] == label[i];
+            sp[k].members = (uint32_t *)neat_mem_realloc(&pop->a, NULL, 0, (size_t)count * sizeof(uint32_t));
+            n_sp++;
+            if (sp[k].members == NULL) {
+                err = NEAT_E_NOMEM;
+                break;
+            }
+            sp[k].cap_members = count;
+            neat_genome_init(&sp[k].rep);
+            err = neat_genome_copy(&sp[k].rep, &genomes[i], &pop->a);
+            for (j = 0; j < pop->n_species; j++)
+                if (pop->species[j].id == label[i]) {
+                    /* the same species as before: its history goes on */
+                    sp[k].age = pop->species[j].age + (evaluated ? 1u : 0u);
+                    sp[k].since_improved = pop->species[j].since_improved;
+                    sp[k].best_fitness = pop->species[j].best_fitness;
+                    sp[k].culled = pop->species[j].culled;
+                }
+        }
+        sp[k].members[sp[k].n_members++] = i;
+    }
+    if (err) {
+        for (k = 0; k < n_sp; k++)
+            neat_species_free(&sp[k], &pop->a);
+        neat_mem_free(&pop->a, sp, (size_t)n * sizeof(neat_species));
+        if (next != NULL)
+            for (i = 0; i < n; i++)
+                neat_genome_free(&next[i], &pop->a);
+        neat_mem_free(&pop->a, next, (size_t)n * sizeof(neat_genome));
+        neat_genome_free(&last, &pop->a);
+        neat_genome_free(&ever, &pop->a);
+        return err;
+    }
+    /* commit */
+    if (evaluated) {
+        neat_genome_free(&pop->last_best, &pop->a);
+        pop->last_best = last;
+        if (improved) {
+            neat_genome_free(&pop->best_ever, &pop->a);
+            pop->best_ever = ever;
+        }
+        pop->since_pop_improved = improved ? 0 : pop->since_pop_improved + 1;
+        pop->have_best = 1;
+        pop->generation++;
+    }
+    for (i = 0; i < n; i++) {
+        neat_genome_free(&pop->genomes[i], &pop->a);
+        next[i].species = label[i];
+        next[i].has_fitness = 0;
+        next[i].fitness = 0.0;
+    }
+    neat_mem_free(&pop->a, pop->genomes, (size_t)n * sizeof(neat_genome));
+    pop->genomes = next;
+    for (k = 0; k < pop->n_species; k++)
+        neat_species_free(&pop->species[k], &pop->a);
+    neat_mem_free(&pop->a, pop->species, (size_t)pop->cap_species * sizeof(neat_species));
+    pop->species = sp;
+    pop->cap_species = n;
+    pop->n_species = n_sp;
+    next_id = 0;
+    for (k = 0; k < n_sp; k++)
+        if (sp[k].id >= next_id)
+            next_id = sp[k].id + 1;
+    if (next_id > pop->next_species_id)
+        pop->next_species_id = next_id;
+    if (node + 1 > pop->iv.next_node)
+        pop->iv.next_node = node + 1;
+    if (innov + 1 > pop->iv.next_innov)
+        pop->iv.next_innov = innov + 1;
+    neat_innov_reset(&pop->iv);
+    return NEAT_OK;
+}

@@ -9,6 +9,7 @@
 
 #include <cmocka.h>
 
+#include "neat_coev.h"
 #include "neat_internal.h"
 
 /* ---- fixtures ---- */
@@ -905,6 +906,128 @@ static void test_interleaved_pool_holds_earlier_children(void **state)
     assert_true(from_x[NEAT_SPECIATE_INTERLEAVED] >= 4); /* 10 of the pool's 13: 7.7 expected */
 }
 
+/* ---- another NEAT's reproduction: neat_pop_replace, neat_coev_set_reproducer ---- */
+
+/* a stand-in for the release: each genome's copy with its weights halved, species by index modulo 3 (labels
+ * 7, 8, 9) */
+static int halve_all(neat_pop *pop, int evaluated)
+{
+    uint32_t i, c, n = neat_pop_size(pop), labels[64];
+    neat_genome gs[64];
+    int err;
+    for (i = 0; i < n; i++) {
+        neat_genome_init(&gs[i]);
+        assert_int_equal(neat_genome_copy(&gs[i], neat_pop_genome(pop, i), NULL), NEAT_OK);
+        for (c = 0; c < gs[i].n_conns; c++)
+            gs[i].conns[c].weight *= 0.5;
+        labels[i] = 7 + i % 3;
+    }
+    err = neat_pop_replace(pop, gs, labels, n, evaluated);
+    for (i = 0; i < n; i++)
+        neat_genome_free(&gs[i], NULL);
+    return err;
+}
+
+static void test_pop_replace(void **state)
+{
+    neat_params p = pop_params();
+    neat_pop *pop = NULL, *copy;
+    neat_genome bad[60];
+    uint32_t i, labels[60];
+    uint8_t *buf;
+    size_t len;
+    double w0;
+    (void)state;
+    p.pop_size = 30;
+    assert_int_equal(neat_pop_create(&pop, &p, NULL, 3, NULL), NEAT_OK);
+    w0 = neat_pop_genome(pop, 4)->conns[1].weight;
+    /* unevaluated: the start replaced, no generation played */
+    assert_int_equal(halve_all(pop, 0), NEAT_OK);
+    assert_int_equal(neat_pop_generation(pop), 0);
+    assert_true(neat_pop_genome(pop, 4)->conns[1].weight == 0.5 * w0);
+    assert_int_equal(neat_pop_species_count(pop), 3);
+    /* evaluated without fitness: refused, nothing changed */
+    assert_int_equal(halve_all(pop, 1), NEAT_E_FITNESS);
+    assert_true(neat_pop_genome(pop, 4)->conns[1].weight == 0.5 * w0);
+    for (i = 0; i < 30; i++)
+        assert_int_equal(neat_pop_set_fitness(pop, i, (double)(i % 7)), NEAT_OK);
+    assert_int_equal(halve_all(pop, 1), NEAT_OK);
+    assert_int_equal(neat_pop_generation(pop), 1);
+    assert_non_null(neat_pop_best_ever(pop));
+    assert_true(neat_pop_best_ever(pop)->fitness == 6.0);
+    {
+        neat_species_info info;
+        assert_int_equal(neat_pop_species(pop, 0, &info), NEAT_OK);
+        assert_int_equal(info.id, 7);
+        assert_int_equal(info.age, 1); /* the same label as last generation: one older */
+        assert_int_equal(info.size, 10);
+    }
+    /* a genome of another shape: refused, nothing changed */
+    for (i = 0; i < 30; i++) {
+        neat_genome_init(&bad[i]);
+        assert_int_equal(neat_genome_minimal(&bad[i], 3, 1, NULL), NEAT_OK);
+        labels[i] = 1;
+    }
+    assert_int_equal(neat_pop_replace(pop, bad, labels, 30, 0), NEAT_E_ARG);
+    assert_int_equal(neat_pop_replace(pop, bad, labels, 29, 0), NEAT_E_ARG);
+    assert_int_equal(neat_pop_species_count(pop), 3);
+    for (i = 0; i < 30; i++)
+        neat_genome_free(&bad[i], NULL);
+    /* the result checkpoints and loads, and libneat's own epoch can go on from it */
+    assert_int_equal(neat_pop_save(pop, &buf, &len), NEAT_OK);
+    copy = NULL;
+    assert_int_equal(neat_pop_load(&copy, buf, len, NULL, NULL), NEAT_OK);
+    neat_pop_buf_free(pop, buf, len);
+    for (i = 0; i < 30; i++)
+        assert_int_equal(neat_pop_set_fitness(copy, i, 1.0 + i), NEAT_OK);
+    assert_int_equal(neat_pop_epoch(copy), NEAT_OK);
+    neat_pop_free(copy);
+    neat_pop_free(pop);
+}
+
+static int coev_halve(void *ud, uint32_t which, neat_pop *pop, int evaluated)
+{
+    uint32_t *calls = (uint32_t *)ud;
+    calls[which * 2 + (evaluated ? 1 : 0)]++;
+    return halve_all(pop, evaluated);
+}
+
+/* the game: the genome whose first weight is larger wins */
+static int play_first_weight(void *ud, neat_game *games, size_t n)
+{
+    size_t i;
+    (void)ud;
+    for (i = 0; i < n; i++) {
+        double a = games[i].a->conns[0].weight, b = games[i].b->conns[0].weight;
+        games[i].result = (int8_t)(a > b ? 1 : (a < b ? -1 : 0));
+    }
+    return 0;
+}
+
+static void test_coev_reproducer(void **state)
+{
+    neat_params p = small_params();
+    neat_coev_params cp = neat_coev_params_default();
+    neat_coev *c = NULL;
+    uint32_t calls[4] = {0, 0, 0, 0}, g;
+    neat_coev_report rep;
+    (void)state;
+    p.pop_size = 30;
+    p.pop_stagnation = 0;
+    cp.compare_configs = 2;
+    assert_int_equal(neat_coev_create(&c, &p, &cp, NULL, 5, NULL), NEAT_OK);
+    assert_int_equal(neat_coev_set_reproducer(c, coev_halve, calls), NEAT_OK);
+    assert_int_equal(calls[0] + calls[2], 2); /* both starts replaced */
+    for (g = 0; g < 3; g++)
+        assert_int_equal(neat_coev_step(c, play_first_weight, NULL, &rep), NEAT_OK);
+    assert_int_equal(calls[1], 3);
+    assert_int_equal(calls[3], 3);
+    assert_int_equal(neat_coev_generation(c), 3);
+    assert_int_equal(neat_pop_species_count(neat_coev_pop(c, 0)), 3);
+    assert_int_equal(neat_pop_generation(neat_coev_pop(c, 1)), 3);
+    neat_coev_free(c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -923,6 +1046,8 @@ int main(void)
         cmocka_unit_test(test_identical_parents_mutated),
         cmocka_unit_test(test_interspecies_cpp_toward_best),
         cmocka_unit_test(test_interleaved_pool_holds_earlier_children),
+        cmocka_unit_test(test_pop_replace),
+        cmocka_unit_test(test_coev_reproducer),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
