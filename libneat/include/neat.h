@@ -415,9 +415,10 @@ NEAT_API int neat_pop_set_params(neat_pop *pop, const neat_params *p);
  * innovation number the genomes use. NEAT_E_ARG for a genome not of the
  * population's shape or larger than max_nodes, or a label at the counters'
  * limit; NEAT_E_FITNESS; NEAT_E_NOMEM: on every error the population is
- * unchanged. */
+ * unchanged. delta_t > 0: the threshold the other NEAT speciated them with
+ * (neat_pop_delta_t reports it); otherwise libneat's is kept. */
 NEAT_API int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *label, uint32_t n,
-                              int evaluated);
+                              int evaluated, double delta_t);
 
 /* ---- checkpoints (docs/formats.md) --------------------------------------
  * The whole state: parameters, genomes, species, delta_t, innovation list,

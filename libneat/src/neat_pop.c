@@ -331,14 +331,15 @@ int neat_pop_set_params(neat_pop *pop, const neat_params *p)
     return NEAT_OK;
 }
 
-int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *label, uint32_t n, int evaluated)
+int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *label, uint32_t n, int evaluated,
+                     double delta_t)
 {
     uint32_t i, k, j, best = 0, n_sp = 0, node = 0, innov = 0, next_id;
     neat_genome *next = NULL, last, ever;
     neat_species *sp = NULL;
     int err = NEAT_OK, improved = 0;
 
-    if (pop == NULL || genomes == NULL || label == NULL || n != pop->p.pop_size)
+    if (pop == NULL || genomes == NULL || label == NULL || n != pop->p.pop_size || !(delta_t <= 1e300))
         return NEAT_E_ARG;
     for (i = 0; i < n; i++) {
         const neat_genome *g = &genomes[i];
@@ -457,5 +458,7 @@ int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *
     if (innov + 1 > pop->iv.next_innov)
         pop->iv.next_innov = innov + 1;
     neat_innov_reset(&pop->iv);
+    if (delta_t > 0)
+        pop->delta_t_used = delta_t;
     return NEAT_OK;
 }

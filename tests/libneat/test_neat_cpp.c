@@ -922,7 +922,7 @@ static int halve_all(neat_pop *pop, int evaluated)
             gs[i].conns[c].weight *= 0.5;
         labels[i] = 7 + i % 3;
     }
-    err = neat_pop_replace(pop, gs, labels, n, evaluated);
+    err = neat_pop_replace(pop, gs, labels, n, evaluated, 0.0);
     for (i = 0; i < n; i++)
         neat_genome_free(&gs[i], NULL);
     return err;
@@ -968,8 +968,8 @@ static void test_pop_replace(void **state)
         assert_int_equal(neat_genome_minimal(&bad[i], 3, 1, NULL), NEAT_OK);
         labels[i] = 1;
     }
-    assert_int_equal(neat_pop_replace(pop, bad, labels, 30, 0), NEAT_E_ARG);
-    assert_int_equal(neat_pop_replace(pop, bad, labels, 29, 0), NEAT_E_ARG);
+    assert_int_equal(neat_pop_replace(pop, bad, labels, 30, 0, 0.0), NEAT_E_ARG);
+    assert_int_equal(neat_pop_replace(pop, bad, labels, 29, 0, 0.0), NEAT_E_ARG);
     assert_int_equal(neat_pop_species_count(pop), 3);
     for (i = 0; i < 30; i++)
         neat_genome_free(&bad[i], NULL);

@@ -125,6 +125,16 @@ config)
     { echo "run: the profile did not come first"; exit 1; }
   # and such a run resumes (its config.ini reads back to the same configuration)
   "$duel" resume "$tmp/prof" --quiet --generations 3
+  # NEAT C++ 1.2.1's own reproduction is neatcpp_duel's (tools/neatcpp): duel_evolve refuses such a run, and
+  # refuses to resume one (libneat would go on where the release reproduced)
+  expect_bad "only neatcpp_duel, built against a checkout of the release, runs it" \
+    run --config "$cfg" --out "$tmp/never" --set run.reproduction=neat-cpp-1.2.1
+  [ ! -e "$tmp/never" ] || { echo "a refused reproduction created the run directory"; exit 1; }
+  ! grep -q "^reproduction" "$tmp/prof/config.ini" || { echo "reproduction = libneat written"; exit 1; }
+  sed -i 's/^\[run\]$/[run]\nreproduction = neat-cpp-1.2.1/' "$tmp/prof/config.ini"
+  expect_bad "cannot be resumed (the release's populations are in no file)" resume "$tmp/prof" --generations 4
+  "$duel" config --dump --config "$tmp/prof/config.ini" | grep -qx "reproduction = neat-cpp-1.2.1" ||
+    { echo "reproduction not dumped"; exit 1; }
   ;;
 ladder)
   "$duel" run --config "$cfg" --out "$tmp/l" --quiet --generations 4

@@ -79,7 +79,7 @@ static int duel_dispatch(int argc, char **argv)
     return 2;
 }
 
-int main(int argc, char **argv)
+int duel_evolve_main(int argc, char **argv)
 {
     size_t i;
     int rc = duel_mpi_start(argc - 1, argv + 1);

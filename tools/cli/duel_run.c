@@ -994,6 +994,37 @@ static int duel_copy_opponents(const duel_run *R)
     return 0;
 }
 
+/* Another NEAT's reproduction, registered by a program that holds one (duel_cli.h). */
+static duel_reproducer duel_other;
+static int duel_have_other;
+
+void duel_run_set_reproducer(const duel_reproducer *r)
+{
+    duel_have_other = r != NULL;
+    if (r != NULL)
+        duel_other = *r;
+}
+
+/* A run whose [run] reproduction is another NEAT's: refused unless this program holds it. 0, or 2 after
+ * one line on stderr. */
+static int duel_check_reproduction(const duel_run *R)
+{
+    if (R->cfg.reproduction == DUEL_REPRODUCE_LIBNEAT)
+        return 0;
+    if (R->cfg.opp.n > 0) {
+        fprintf(stderr, "duel_evolve: [run] reproduction = neat-cpp-1.2.1 reproduces a coevolution's populations; a run "
+                        "against fixed opponents ([opponents] play) has libneat's only\n");
+        return 2;
+    }
+    if (!duel_have_other || duel_other.which != R->cfg.reproduction) {
+        fprintf(stderr, "duel_evolve: [run] reproduction = neat-cpp-1.2.1 is NEAT C++ 1.2.1's own reproduction: only "
+                        "neatcpp_duel, built against a checkout of the release, runs it (tools/neatcpp/build.sh, "
+                        "docs/neat-cpp.md)\n");
+        return 2;
+    }
+    return 0;
+}
+
 /* The two populations from the configuration's start topology. 0, or -1
  * after one line on stderr (2: the configuration's fault, 1: the machine's). */
 static int duel_create(duel_run *R)
@@ -1002,11 +1033,23 @@ static int duel_create(duel_run *R)
     neat_genome g;
     neat_start st;
     int e;
+    if ((e = duel_check_reproduction(R)) != 0)
+        return e;
     if (R->cfg.opp.n == 0) {
         /* a coevolution: as the Python package starts one (duel_runtag.c) */
         e = duel_coev_new(&R->coev, &R->cfg, err, sizeof err);
         if (e)
             fprintf(stderr, "duel_evolve: %s\n", err);
+        if (e == 0 && R->cfg.reproduction != DUEL_REPRODUCE_LIBNEAT) {
+            /* the other NEAT's populations replace libneat's from generation 0 on */
+            if (duel_other.begin(duel_other.ud, &R->cfg) != 0)
+                return 2;
+            e = neat_coev_set_reproducer(R->coev, duel_other.reproduce, duel_other.ud);
+            if (e) {
+                fprintf(stderr, "duel_evolve: NEAT C++ 1.2.1's start: %s\n", neat_strerror(e));
+                return 1;
+            }
+        }
         return e;
     }
     if (duel_start_genome(&R->cfg, &g, err, sizeof err) != 0) {
@@ -1504,6 +1547,13 @@ static int duel_resume_main(int argc, char **argv)
         return 2;
     }
     before = R.cfg;
+    if (R.cfg.reproduction != DUEL_REPRODUCE_LIBNEAT) {
+        /* libneat would go on where NEAT C++ 1.2.1 reproduced, whose populations no file holds */
+        fprintf(stderr, "duel_evolve: %s: [run] reproduction = neat-cpp-1.2.1: a run reproduced by NEAT C++ 1.2.1's own "
+                        "code cannot be resumed (the release's populations are in no file); start it again (it is "
+                        "deterministic: the same seed gives the same run)\n", path);
+        return 2;
+    }
     if (duel_take_lock(R.dir) != 0)
         return 2;
     if (duel_config_set_list(&R.cfg, (const char *const *)sets, n_sets, &k, err, sizeof err) != 0) {

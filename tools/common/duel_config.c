@@ -15,11 +15,14 @@
 #define COEV_KEY(name, lo, hi) {#name, NEAT_CFG_U32, offsetof(neat_coev_params, name), lo, hi, NULL}
 
 static const char *const duel_train_names[] = {"training", "comparison", NULL};
+static const char *const duel_reproduction_names[] = {"libneat", "neat-cpp-1.2.1", NULL};
 static const neat_cfg_key duel_run_keys[] = {
     RUN_KEY(generations, NEAT_CFG_U32, 1, 1000000),
     RUN_KEY(seed, NEAT_CFG_U32, 0, 4294967295.0),
     {"train_layouts", NEAT_CFG_ENUM, offsetof(duel_config, train_layouts), 0, 1, duel_train_names},
     RUN_KEY(strength_every, NEAT_CFG_U32, 0, 1000000),
+    /* last: dumped only when not libneat, so that every other run's config.ini keeps its bytes */
+    {"reproduction", NEAT_CFG_ENUM, offsetof(duel_config, reproduction), 0, 1, duel_reproduction_names},
 };
 static const neat_cfg_key duel_coev_keys[] = {
     COEV_KEY(species_opponents, 0, 64),
@@ -491,7 +494,7 @@ int duel_config_set_list(duel_config *cfg, const char *const *sets, uint32_t n, 
 void duel_config_dump(FILE *out, const duel_config *cfg)
 {
     fprintf(out, "[run]\n");
-    neat_config_dump_keys(out, duel_run_keys, N_RUN, cfg);
+    neat_config_dump_keys(out, duel_run_keys, cfg->reproduction != DUEL_REPRODUCE_LIBNEAT ? N_RUN : N_RUN - 1, cfg);
     fprintf(out, "\n[coevolution]\n");
     neat_config_dump_keys(out, duel_coev_keys, N_COEV, &cfg->coev);
     fprintf(out, "\n[neat]\n");

@@ -49,11 +49,16 @@ typedef struct duel_opponents {
     int fitness;        /* enum duel_fitness */
 } duel_opponents;
 
+/* [run] reproduction: libneat's, or NEAT C++ 1.2.1's own, which only a program holding the release
+ * (tools/neatcpp/: neatcpp_duel, docs/neat-cpp.md) runs */
+enum duel_reproduction { DUEL_REPRODUCE_LIBNEAT = 0, DUEL_REPRODUCE_NEAT_CPP = 1 };
+
 typedef struct duel_config {
     uint32_t generations; /* [run] generations to play in all */
     uint32_t seed;        /* [run] */
     int train_layouts;    /* [run] enum duel_train_layouts */
     uint32_t strength_every; /* [run] every K generations the champion against every builtin (strength.csv); 0 never */
+    int reproduction;     /* [run] enum duel_reproduction: whose reproduction the coevolution's populations use */
     neat_coev_params coev;
     neat_params neat;
     duel_start start;     /* [neat] start */

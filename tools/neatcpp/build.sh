@@ -2,7 +2,7 @@
 # build.sh - builds neatcpp_bench (docs/neat-cpp.md) against a checkout of the NEAT C++ 1.2.1 release.
 # usage: tools/neatcpp/build.sh CHECKOUT [BUILD_DIR]   (BUILD_DIR default: build-neatcpp, in the current directory)
 # The release's sources are compiled from CHECKOUT as they are; nothing of it is copied into this tree. The build is
-# the smallest that makes neatcpp_bench: libneat, the runtime, the benchmark evaluators (no tools, no tests).
+# neatcpp_bench (libneat, the runtime, the benchmark evaluators) and, with the tools, neatcpp_duel; no tests.
 set -eu
 if [ $# -lt 1 ] || [ $# -gt 2 ]; then
     echo "usage: $0 CHECKOUT [BUILD_DIR]" >&2
@@ -28,7 +28,14 @@ fi
 gen=""
 command -v ninja >/dev/null 2>&1 && gen="-G Ninja"
 # shellcheck disable=SC2086 # $gen is one option or none
+# the tools too (AUTO: when their packages are there, as scripts/deps.sh installs them): neatcpp_duel is duel_evolve
 cmake -S "$src" -B "$build" $gen -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNEAT_CPP_DIR="$checkout" \
-    -DNEAT_TOOLS=OFF -DNEAT_TESTS=OFF -DNEAT_INSTALL=OFF
+    -DNEAT_TOOLS=AUTO -DNEAT_TESTS=OFF -DNEAT_INSTALL=OFF
 cmake --build "$build" --target neatcpp_bench -j "${NEAT_JOBS:-1}"
 echo "built $build/bin/neatcpp_bench (release at $checkout)"
+if cmake --build "$build" --target help | grep -q neatcpp_duel; then
+    cmake --build "$build" --target neatcpp_duel -j "${NEAT_JOBS:-1}"
+    echo "built $build/bin/neatcpp_duel"
+else
+    echo "no neatcpp_duel: the tools' packages are missing (scripts/deps.sh)"
+fi

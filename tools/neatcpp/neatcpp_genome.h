@@ -26,4 +26,21 @@ int neatcpp_genome_shape(const NEAT::Genome *g, uint32_t *n_inputs, uint32_t *n_
 // (NEAT_E_ARG: a gene names a node the genome has not).
 int neatcpp_genome_convert(const NEAT::Genome *g, neat_genome *out, uint32_t *clamped);
 
+// The same, keeping the historical markings, for a genome descended from a
+// start made by neatcpp_genome_from_libneat: node id = the release's node_id
+// - 1, innovation = the release's innovation number - 1 (whole numbers: the
+// release counts them up by 1.0). A gene whose innovation number repeats
+// one of the genome's, which libneat's genome cannot hold, is left out and
+// counted in *dropped; every other gene is kept, a second link between two
+// nodes too (the release's, its recurrent flag telling them apart), so our
+// runtime adds up what the release's network does. NEAT_OK or a neat_error.
+int neatcpp_genome_convert_ids(const NEAT::Genome *g, neat_genome *out, uint32_t *dropped);
+
+// A release genome of g's structure (node_id = id + 1, innovation = innov +
+// 1, weights and enabled flags kept; one trait), as a start for
+// NEAT::Population(start, size). A gene is flagged recurrent when it is a
+// self-loop or runs from a hidden or output node to one of lower id, the
+// order libneat's hidden layers are laid out in. NULL if the allocator fails.
+NEAT::Genome *neatcpp_genome_from_libneat(const neat_genome *g);
+
 #endif // NEATCPP_GENOME_H
