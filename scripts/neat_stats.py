@@ -12,7 +12,8 @@ def u_stat(a, b):
     return sum(1.0 if x > y else 0.5 if x == y else 0.0 for x in a for y in b)
 
 
-def _ranks(values):
+def ranks(values):
+    """Mid-ranks (1-based; ties share the mean of their ranks)."""
     order = sorted(range(len(values)), key=lambda i: values[i])
     ranks = [0.0] * len(values)
     i = 0
@@ -46,10 +47,10 @@ def mann_whitney(a, b):
             total += 1
             hits += abs(u_stat(ga, gb) - mean) >= obs - 1e-9
         return u, hits / total
-    ranks = _ranks(list(a) + list(b))
+    rk = ranks(list(a) + list(b))
     n = n1 + n2
     ties = {}
-    for r in ranks:
+    for r in rk:
         ties[r] = ties.get(r, 0) + 1
     tie_term = sum(t ** 3 - t for t in ties.values()) / (n * (n - 1))
     var = n1 * n2 / 12.0 * ((n + 1) - tie_term)

@@ -5,22 +5,12 @@ dominant's level divided by its run's levels and its wins - losses against forag
 p-value of a permutation test (20,000 shuffles, seeded), and within each run. Also criterion (a)'s second half: the
 top dominant of each run wins more than it loses."""
 import csv
+import os
 import random
 import sys
 
-
-def ranks(xs):
-    order = sorted(range(len(xs)), key=lambda i: xs[i])
-    r = [0.0] * len(xs)
-    i = 0
-    while i < len(order):
-        j = i
-        while j + 1 < len(order) and xs[order[j + 1]] == xs[order[i]]:
-            j += 1
-        for k in range(i, j + 1):
-            r[order[k]] = (i + j) / 2.0 + 1
-        i = j + 1
-    return r
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from neat_stats import ranks  # noqa: E402
 
 
 def spearman(x, y):

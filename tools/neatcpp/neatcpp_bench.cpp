@@ -29,6 +29,7 @@ extern "C" {
 #include "neatcpp_genome.h"
 #include "neatcpp_native.h"
 #include "neatcpp_params.h"
+#include "neatcpp_random.h"
 
 // the release's headers
 #include "genome.h"
@@ -238,27 +239,6 @@ int start_is_minimal(const NEAT::Genome *g, uint32_t n_in, uint32_t n_out)
     return 1;
 }
 
-// The release's random state at the start of every run. Its only generator
-// is the C library's rand() (neat.h: randfloat, randint, randposneg), seeded
-// here and nowhere else in the linked code (neatmain.cpp's srand(time) is not
-// linked); but NEAT::gaussrand keeps a spare deviate in a function static
-// between calls, so a run could inherit one from the run before. Whether a
-// call drew from rand() shows in rand()'s sequence: draw until the spare is
-// spent, without touching the release's sources.
-void release_reset_random(uint32_t seed32)
-{
-    int fresh, after;
-    srand(1);
-    fresh = rand();
-    srand(1);
-    (void)NEAT::gaussrand();
-    after = rand();
-    // drew two uniforms and kept the second deviate: one more call spends it
-    // (otherwise it returned the spare without drawing, and none is left)
-    if (after != fresh)
-        (void)NEAT::gaussrand();
-    srand(seed32);
-}
 
 void stats_add(gen_stats *s, const neat_genome *g, double f)
 {
@@ -315,7 +295,7 @@ int run_release(const options &o, NEAT::Genome *start, const neat_params &p, uin
     int err = 0;
     void *cart = native && o.task == "pole" ? neatcpp_native_cart_new() : NULL;
 
-    release_reset_random((uint32_t)(seed & 0xffffffffu));
+    neatcpp_reset_random((uint32_t)(seed & 0xffffffffu));
     NEAT::Population *pop = new NEAT::Population(start, NEAT::pop_size);
     neat_phenotype_init(&ph, NULL);
     for (gen = 0; !err && gen < o.max_generations; gen++) {

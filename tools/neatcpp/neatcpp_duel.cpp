@@ -24,6 +24,7 @@ extern "C" {
 #include "duel_cli.h"
 }
 #include "neatcpp_genome.h"
+#include "neatcpp_random.h"
 
 namespace {
 
@@ -133,27 +134,17 @@ int install(uint32_t which, neat_pop *pop, int evaluated, double used)
     return err;
 }
 
-// A run begins: the release's parameters and random state. Its generator is the C library's rand(), seeded from
-// the run's seed; NEAT::gaussrand keeps a spare deviate in a static, spent here so that a run does not depend on
-// the one before it in this process.
+// A run begins: the release's parameters and random state (neatcpp_random.h), seeded from the run's seed.
 int begin(void *ud, const duel_config *cfg)
 {
     uint64_t key = 0x6e656174u; // "neat": the release's stream
-    int fresh, after;
     (void)ud;
     run_state.pop[0] = run_state.pop[1] = NULL;
     run_state.p = cfg->neat;
     run_state.seed = cfg->seed;
     if (set_release_params(&cfg->neat) != 0)
         return -1;
-    srand(1);
-    fresh = rand();
-    srand(1);
-    (void)NEAT::gaussrand();
-    after = rand();
-    if (after != fresh)
-        (void)NEAT::gaussrand();
-    srand((unsigned)neat_seed_derive(cfg->seed, &key, 1));
+    neatcpp_reset_random((uint32_t)neat_seed_derive(cfg->seed, &key, 1));
     return 0;
 }
 
