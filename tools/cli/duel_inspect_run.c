@@ -72,8 +72,10 @@ static int duel_inspect_pop_ckpt(const char *path, const uint8_t *buf, size_t le
         return 2;
     }
     printf("file: %s\n", path);
+    /* the file's own format: 3, or 4 with NEAT C++ 1.2.1's switches (the loader checked bytes 8-11) */
     printf("population checkpoint (a run against fixed opponents), format %u: next generation %u\n",
-           NEAT_CHECKPOINT_VERSION, neat_pop_generation(pop));
+           (unsigned)((uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24),
+           neat_pop_generation(pop));
     printf("mode: %s, net_step %s\n", duel_mode_name(neat_pop_params(pop)->mode),
            neat_pop_params(pop)->net_step == NEAT_STEP_PROPAGATE ? "propagate" : "sync");
     duel_inspect_pop(pop, "population");
