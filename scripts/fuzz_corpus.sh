@@ -25,6 +25,9 @@ printf '[run]\ngenerations = 3\nseed = 3\n[coevolution]\nspecies_opponents = 1\n
 "$duel" run --config "$work/tiny.ini" --out "$work/r3" --quiet
 cp "$work/r1/checkpoint.bin" "$c/coev/gen1.bin"
 cp "$work/r3/checkpoint.bin" "$c/coev/gen3.bin"
+# the same under NEAT C++ 1.2.1's profile: its populations' checkpoints are version 4
+"$duel" run --config "$work/tiny.ini" --out "$work/p3" --quiet --set profile=neat-cpp-1.2.1
+cp "$work/p3/checkpoint.bin" "$c/coev/neat-cpp-gen3.bin"
 cp "$work/r3/champions/"*.genome "$c/genome/"
 
 cp "$root/configs/"*.ini "$root/bench/"*.ini "$root/tests/tools/coev-small.ini" "$c/ini/"

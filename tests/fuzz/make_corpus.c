@@ -95,12 +95,14 @@ static void mc_fix_crc(uint8_t *b, size_t len)
 
 /* Population checkpoints: 2 inputs, 1 output, 12 genomes, at generation 0
  * and after a few epochs (grown networks, several species), in each mode;
- * the simplify ones with net_step propagate and a game tag (version 3). */
+ * the simplify ones with net_step propagate and a game tag (version 3); and
+ * a fourth with NEAT C++ 1.2.1's profile and a cull every 2 generations
+ * (version 4: its switches and species' culled flags). */
 static int mc_pops(const char *dir)
 {
-    static const int modes[] = {NEAT_MODE_COMPLEXIFY, NEAT_MODE_FIXED, NEAT_MODE_SIMPLIFY};
+    static const int modes[] = {NEAT_MODE_COMPLEXIFY, NEAT_MODE_FIXED, NEAT_MODE_SIMPLIFY, NEAT_MODE_COMPLEXIFY};
     int err = 0, m;
-    for (m = 0; m < 3 && !err; m++) {
+    for (m = 0; m < 4 && !err; m++) {
         neat_params p = neat_params_default();
         neat_pop *pop;
         uint8_t *buf;
@@ -114,13 +116,21 @@ static int mc_pops(const char *dir)
         p.add_node_prob = 0.2;
         p.add_conn_prob = 0.3;
         p.net_step = m == 2 ? NEAT_STEP_PROPAGATE : NEAT_STEP_SYNC;
+        if (m == 3) {
+            (void)neat_params_set_profile(&p, NEAT_PROFILE_NEAT_CPP);
+            p.cull_every = 2;
+            p.cull_age = 1;
+        }
         err = neat_pop_create(&pop, &p, NULL, 5u + (uint32_t)m, NULL);
         if (!err && m == 2)
             err = neat_pop_set_game(pop, (const uint8_t *)"duel world rules v1\0\1\2", 22);
         for (e = 0; e < 6 && !err; e++) {
             if (e == 0 || e == 5) {
                 err = neat_pop_save(pop, &buf, &len);
-                snprintf(name, sizeof name, "pop-mode%d-gen%u.bin", m, e);
+                if (m == 3)
+                    snprintf(name, sizeof name, "pop-neat-cpp-gen%u.bin", e);
+                else
+                    snprintf(name, sizeof name, "pop-mode%d-gen%u.bin", m, e);
                 if (!err) {
                     err = mc_write(dir, name, buf, len);
                     neat_pop_buf_free(pop, buf, len);
