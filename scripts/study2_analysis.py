@@ -93,7 +93,7 @@ def sizes_at(run, generations):
         for r in csv.DictReader(f):
             g = int(r["generation"])
             if g in generations:
-                got.setdefault(g, []).append((float(r["mean_hidden"]), float(r["mean_conns"])))
+                got.setdefault(g, []).append((float(r["mean_hidden"]), float(r["mean_connections"])))
     return {g: (st.mean([x[0] for x in v]), st.mean([x[1] for x in v])) for g, v in got.items()}
 
 
