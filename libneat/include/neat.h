@@ -416,7 +416,9 @@ NEAT_API int neat_pop_set_params(neat_pop *pop, const neat_params *p);
  * population's shape or larger than max_nodes, or a label at the counters'
  * limit; NEAT_E_FITNESS; NEAT_E_NOMEM: on every error the population is
  * unchanged. delta_t > 0: the threshold the other NEAT speciated them with
- * (neat_pop_delta_t reports it); otherwise libneat's is kept. */
+ * (neat_pop_delta_t reports it); otherwise libneat's is kept. A species'
+ * record (its best fitness, generations since it rose) is carried over, not
+ * updated: the other NEAT keeps its own. */
 NEAT_API int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *label, uint32_t n,
                               int evaluated, double delta_t);
 

@@ -86,6 +86,8 @@ typedef struct neat_species {
     uint8_t eligible;  /* may breed this generation */
     uint8_t super;     /* NEAT_POPSTAG_DELTA this generation: the offspring are copies of the champion */
     uint8_t culled;    /* NEAT_STAGNATION_CPP: culled for good (its fitness times 0.01 from then on) */
+    uint8_t cull_now;  /* per-epoch scratch: culled this generation (committed into culled with the epoch) */
+    double factor;     /* per-epoch scratch: its share over its members' shared sum (stagnation penalties) */
 } neat_species;
 
 /* ---- the population ---- */

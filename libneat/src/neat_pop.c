@@ -260,6 +260,7 @@ int neat_pop_epoch(neat_pop *pop)
     for (k = 0; k < pop->n_species; k++) {
         pop->species[k].best_fitness = pop->species[k].next_best;
         pop->species[k].since_improved = pop->species[k].next_since;
+        pop->species[k].culled |= pop->species[k].cull_now;
         pop->species[k].age++;
     }
     pop->spare = pop->genomes;
@@ -370,12 +371,12 @@ int neat_pop_replace(neat_pop *pop, const neat_genome *genomes, const uint32_t *
     /* everything that can fail, on new storage; the commit below cannot */
     if (!err) {
         next = (neat_genome *)neat_mem_realloc(&pop->a, NULL, 0, (size_t)n * sizeof(neat_genome));
+        if (next != NULL) /* initialised at once: the error path frees its entries */
+            for (i = 0; i < n; i++)
+                neat_genome_init(&next[i]);
         sp = (neat_species *)neat_mem_realloc(&pop->a, NULL, 0, (size_t)n * sizeof(neat_species));
         if (next == NULL || sp == NULL)
             err = NEAT_E_NOMEM;
-        else
-            for (i = 0; i < n; i++)
-                neat_genome_init(&next[i]);
     }
     for (i = 0; i < n && !err; i++)
         err = neat_genome_copy(&next[i], &genomes[i], &pop->a);

@@ -26,7 +26,7 @@ static double neat_champ_fitness(const neat_pop *pop, uint32_t k)
  * looked at), else 1. */
 static double neat_cpp_factor(const neat_pop *pop, const neat_species *s)
 {
-    return s->culled || (uint64_t)s->since_improved + 2 >= pop->p.dropoff_age ? 0.01 : 1.0;
+    return s->culled || s->cull_now || (uint64_t)s->since_improved + 2 >= pop->p.dropoff_age ? 0.01 : 1.0;
 }
 
 /* NEAT C++'s cull "for competitive coevolution" (Population::epoch): every
@@ -44,7 +44,7 @@ static void neat_cpp_cull(neat_pop *pop)
         return;
     for (k = pop->n_species - 1; k > 0 && (uint64_t)pop->species[k].age + 1 < pop->p.cull_age; k--)
         ;
-    pop->species[k].culled = 1;
+    pop->species[k].cull_now = 1; /* culled for good when the epoch commits (a refused epoch changes nothing) */
 }
 
 /* Which species may breed this generation (docs/parameters.md, "Stagnation"). */
@@ -115,7 +115,7 @@ static uint32_t neat_skim(neat_pop *pop, double total, double scale)
     double mean = total / (double)n, skim = 0.0;
     for (k = 0; k < pop->n_species; k++) {
         neat_species *s = &pop->species[k];
-        double factor = pop->p.stagnation_rule == NEAT_STAGNATION_CPP ? neat_cpp_factor(pop, s) : 1.0;
+        double factor = s->factor; /* every penalty its share got (neat_apportion) */
         s->offspring = 0;
         if (!s->eligible)
             continue;
@@ -180,15 +180,24 @@ void neat_apportion(neat_pop *pop, uint32_t *since_pop)
     double total = 0.0, scale = 1.0;
     int cpp = pop->p.stagnation_rule == NEAT_STAGNATION_CPP;
 
+    for (k = 0; k < pop->n_species; k++)
+        pop->species[k].cull_now = 0;
     if (cpp)
         neat_cpp_cull(pop);
     for (k = 0; k < pop->n_species; k++) {
         pop->species[k].adj_sum = neat_shared_sum(pop, &pop->species[k]);
+        pop->species[k].factor = pop->species[k].adj_sum; /* the raw sum, for the factor below */
         if (cpp)
             pop->species[k].adj_sum *= neat_cpp_factor(pop, &pop->species[k]);
         pop->species[k].super = 0;
     }
     neat_mark_eligible(pop, since_pop);
+    /* each species' penalties as one factor (the release's rule, or the improvement rule's
+     * stagnation_factor), for the per-genome shares of NEAT_ROUND_SKIM */
+    for (k = 0; k < pop->n_species; k++) {
+        neat_species *s = &pop->species[k];
+        s->factor = s->factor > 0 ? s->adj_sum / s->factor : 1.0;
+    }
     /* scaled by a power of two (exact) so the largest share is below 1:
      * n * share cannot overflow, whatever the magnitude of the fitness */
     {
@@ -340,7 +349,7 @@ static int neat_breed_super(neat_pop *pop, const neat_species *s, int last, neat
     child->has_fitness = 0;
     if (err || last)
         return err;
-    if (neat_rng_uniform_inl(&pop->rng) < 0.8 || p->add_conn_prob == 0.0)
+    if (neat_rng_uniform_inl(&pop->rng) < 0.8 || p->add_conn_prob == 0.0 || p->mode != NEAT_MODE_COMPLEXIFY)
         return neat_mutate_weights(child, p, &pop->rng);
     return neat_mutate_add_conn(child, p, &pop->rng, &pop->iv, &pop->a);
 }
@@ -404,8 +413,12 @@ int neat_reproduce(neat_pop *pop, neat_genome *next, neat_spec_plan *plan)
             } else {
                 err = neat_breed_one(pop, k, &pool, &next[idx]);
             }
-            if (!err && plan != NULL)
+            if (!err && plan != NULL) {
+                /* unevaluated: as a later species' parent it counts fitness 0, as in the release
+                 * (a copy would otherwise carry its parent's) */
+                next[idx].fitness = 0.0;
                 neat_speciate_place(pop, next, plan, idx);
+            }
             idx++;
         }
     }

@@ -575,6 +575,16 @@ static void test_skim_rounding(void **state)
     assert_int_equal(pop->species[0].offspring, 5);
     assert_int_equal(pop->species[1].offspring, 3);
     assert_int_equal(pop->species[2].offspring, 2);
+    /* with the improvement rule's factor on a stagnant species, the shares still sum to the population and
+     * the penalised species gets a tenth of its share (B: 3 -> 0.3 due in all; the skim carries it on) */
+    pop->p.stagnation_rule = NEAT_STAGNATION_IMPROVEMENT;
+    pop->p.stagnation_factor = 0.1;
+    pop->p.dropoff_age = 15;
+    pop->species[1].next_since = 20;
+    neat_apportion(pop, &since);
+    assert_int_equal(pop->species[0].offspring + pop->species[1].offspring + pop->species[2].offspring, 10);
+    assert_true(pop->species[1].offspring <= 1);
+    pop->p.stagnation_rule = NEAT_STAGNATION_OLDEST_WORST;
     /* largest remainder on the same shares: A 4.5, B 3, C 2.5 -> 5 (or 4), 3, 2 (or 3): the older on a tie */
     pop->p.offspring_rounding = NEAT_ROUND_REMAINDER;
     neat_apportion(pop, &since);
@@ -662,12 +672,14 @@ static void test_cpp_stagnation_dropoff_and_cull(void **state)
     pop->species[2].age = 18;
     pop->generation = 29;
     neat_apportion(pop, &since);
-    assert_int_equal(pop->species[1].culled, 1);
-    assert_int_equal(pop->species[0].culled + pop->species[2].culled, 0);
+    assert_int_equal(pop->species[1].cull_now, 1);
+    assert_int_equal(pop->species[0].cull_now + pop->species[2].cull_now, 0);
+    assert_int_equal(pop->species[1].culled, 0); /* for good only when the epoch commits */
     assert_true(pop->species[1].offspring <= 1);
+    pop->species[1].culled |= pop->species[1].cull_now; /* as neat_pop_epoch's commit does */
     pop->generation = 30;
     neat_apportion(pop, &since);
-    assert_int_equal(pop->species[1].culled, 1);
+    assert_int_equal(pop->species[1].cull_now, 0);
     assert_true(pop->species[1].offspring <= 1);
     /* none old enough: the oldest (first) species */
     pop->species[1].culled = 0;
@@ -675,8 +687,8 @@ static void test_cpp_stagnation_dropoff_and_cull(void **state)
     pop->species[1].age = 2;
     pop->generation = 59;
     neat_apportion(pop, &since);
-    assert_int_equal(pop->species[0].culled, 1);
-    assert_int_equal(pop->species[1].culled + pop->species[2].culled, 0);
+    assert_int_equal(pop->species[0].cull_now, 1);
+    assert_int_equal(pop->species[1].cull_now + pop->species[2].cull_now, 0);
     /* the other rules ignore the flag */
     pop->p.stagnation_rule = NEAT_STAGNATION_OLDEST_WORST;
     pop->p.dropoff_age = 30;
@@ -985,6 +997,72 @@ static void test_pop_replace(void **state)
     neat_pop_free(pop);
 }
 
+/* an allocator that refuses its fail_at-th request (0: none) and counts the blocks alive */
+typedef struct refusing {
+    size_t requests, fail_at;
+    long live;
+} refusing;
+
+static void *refusing_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    refusing *r = (refusing *)ud;
+    (void)old_size;
+    if (new_size == 0) {
+        if (ptr != NULL)
+            r->live--;
+        free(ptr);
+        return NULL;
+    }
+    if (++r->requests == r->fail_at)
+        return NULL;
+    if (ptr == NULL)
+        r->live++;
+    return realloc(ptr, new_size);
+}
+
+static void test_pop_replace_refused_memory(void **state)
+{
+    /* every allocation of neat_pop_replace refused in turn: NEAT_E_NOMEM, the population as it was, no
+     * block leaked (the last try goes through) */
+    neat_params p = pop_params();
+    uint32_t i, c, labels[30], done = 0;
+    neat_genome gs[30];
+    size_t k;
+    (void)state;
+    p.pop_size = 30;
+    for (k = 1; !done && k < 500; k++) {
+        refusing r = {0, 0, 0};
+        neat_alloc a = {refusing_alloc, &r};
+        neat_pop *pop = NULL;
+        int err;
+        assert_int_equal(neat_pop_create(&pop, &p, NULL, 3, &a), NEAT_OK);
+        for (i = 0; i < 30; i++) {
+            neat_genome_init(&gs[i]);
+            assert_int_equal(neat_genome_copy(&gs[i], neat_pop_genome(pop, i), NULL), NEAT_OK);
+            for (c = 0; c < gs[i].n_conns; c++)
+                gs[i].conns[c].weight = 0.25;
+            labels[i] = 40 + i % 4;
+            assert_int_equal(neat_pop_set_fitness(pop, i, 1.0 + i), NEAT_OK);
+        }
+        r.fail_at = r.requests + k;
+        err = neat_pop_replace(pop, gs, labels, 30, 1, 0.0);
+        if (err == NEAT_OK) {
+            done = 1;
+            assert_int_equal(neat_pop_generation(pop), 1);
+        } else {
+            assert_int_equal(err, NEAT_E_NOMEM);
+            assert_int_equal(neat_pop_generation(pop), 0);
+            assert_true(neat_pop_genome(pop, 0)->conns[0].weight != 0.25);
+            assert_true(neat_pop_genome(pop, 0)->has_fitness);
+        }
+        neat_pop_free(pop);
+        assert_int_equal(r.live, 0);
+        for (i = 0; i < 30; i++)
+            neat_genome_free(&gs[i], NULL);
+    }
+    assert_true(done && k > 3);
+}
+
 static int coev_halve(void *ud, uint32_t which, neat_pop *pop, int evaluated)
 {
     uint32_t *calls = (uint32_t *)ud;
@@ -1047,6 +1125,7 @@ int main(void)
         cmocka_unit_test(test_interspecies_cpp_toward_best),
         cmocka_unit_test(test_interleaved_pool_holds_earlier_children),
         cmocka_unit_test(test_pop_replace),
+        cmocka_unit_test(test_pop_replace_refused_memory),
         cmocka_unit_test(test_coev_reproducer),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

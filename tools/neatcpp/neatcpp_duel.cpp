@@ -52,6 +52,13 @@ int set_release_params(const neat_params *p)
         fprintf(stderr, "neatcpp_duel: mode = simplify: NEAT C++ 1.2.1 has no simplifying mutation\n");
         return -1;
     }
+    // what the release has fixed in its code: another value would be silently not what ran
+    if (p->elitism_min_size != 5 || p->weight_max != 8.0 || p->weight_init_range != 1.0 || p->cull_every != 30 ||
+        p->cull_age != 20 || p->normalize_by_size != 0) {
+        fprintf(stderr, "neatcpp_duel: NEAT C++ 1.2.1 fixes elitism_min_size 5, weight_max 8, weight_init_range 1, "
+                        "cull_every 30, cull_age 20 and normalize_by_size false in its code: this run sets another\n");
+        return -1;
+    }
     NEAT::trait_param_mut_prob = 0.0;
     NEAT::trait_mutation_power = 0.0;
     NEAT::linktrait_mut_sig = 0.0;
@@ -125,6 +132,10 @@ int install(uint32_t which, neat_pop *pop, int evaluated, double used)
         err = neatcpp_genome_convert_ids(rp->organisms[i]->gnome, &gs[i], &dropped);
         labels[i] = (uint32_t)rp->organisms[i]->species->id;
     }
+    if (!err && dropped > 0)
+        // seen never so far: said, since such a network is not quite the release's
+        fprintf(stderr, "neatcpp_duel: population %u, generation %u: %u repeated genes or nodes of NEAT C++ 1.2.1's "
+                        "genomes left out (docs/neat-cpp.md)\n", which, neat_pop_generation(pop), dropped);
     if (!err)
         err = neat_pop_replace(pop, gs.data(), labels.data(), (uint32_t)n, evaluated, used);
     for (i = 0; i < n; i++)

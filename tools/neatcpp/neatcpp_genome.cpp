@@ -97,10 +97,16 @@ int neatcpp_genome_convert_ids(const NEAT::Genome *g, neat_genome *out, uint32_t
         case NEAT::OUTPUT: type = NEAT_NODE_OUTPUT; break;
         default: type = NEAT_NODE_HIDDEN; break;
         }
-        if ((*it)->node_id < 1)
+        if ((*it)->node_id < 1) {
             err = NEAT_E_ARG;
-        else
+        } else if (find_node(out, (*it)->node_id - 1) != NULL) {
+            // a node id the genome has already: the release can make one when a child of this generation,
+            // taken as a later species' parent, has a link split again (docs/neat-cpp.md); libneat's genome
+            // holds each id once, and the genes name the node by its id, so the one node serves them all
+            ++*dropped;
+        } else {
             err = neat_genome_add_node(out, (uint32_t)((*it)->node_id - 1), type, NULL);
+        }
     }
     for (std::vector<NEAT::Gene *>::const_iterator it = g->genes.begin(); it != g->genes.end() && !err; ++it) {
         const NEAT::Link *l = (*it)->lnk;

@@ -31,7 +31,8 @@ int neatcpp_genome_convert(const NEAT::Genome *g, neat_genome *out, uint32_t *cl
 // - 1, innovation = the release's innovation number - 1 (whole numbers: the
 // release counts them up by 1.0). A gene whose innovation number repeats
 // one of the genome's, which libneat's genome cannot hold, is left out and
-// counted in *dropped; every other gene is kept, a second link between two
+// counted in *dropped, and so is a node whose id repeats one's (the genes
+// name nodes by id: they keep the one); every other gene is kept, a second link between two
 // nodes too (the release's, its recurrent flag telling them apart), so our
 // runtime adds up what the release's network does. NEAT_OK or a neat_error.
 int neatcpp_genome_convert_ids(const NEAT::Genome *g, neat_genome *out, uint32_t *dropped);
