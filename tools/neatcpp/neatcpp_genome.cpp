@@ -1,4 +1,4 @@
-// neatcpp_genome.cpp - NEAT::Genome -> neat_genome: node ids renumbered to libneat's layout, genes in their order.
+// neatcpp_genome.cpp - NEAT::Genome <-> neat_genome: renumbered to libneat's layout, or with the historical markings kept, and a start the other way.
 #include "neatcpp_genome.h"
 
 #include <map>
