@@ -76,7 +76,8 @@ static void neat_put_params(neat_wbuf *w, const neat_params *p, uint32_t version
     neat_put_u32(w, (uint32_t)p->pop_stagnation_rule);
 }
 
-/* version: the checkpoint's; before 3 the networks stepped sync, the only mode */
+/* version: the checkpoint's; before 3 the networks stepped sync, the only mode. *p starts as
+ * neat_params_default(): what an older version does not hold keeps its default. */
 static void neat_get_params(neat_rbuf *r, neat_params *p, uint32_t version)
 {
     p->pop_size = neat_get_u32(r);
@@ -115,26 +116,8 @@ static void neat_get_params(neat_rbuf *r, neat_params *p, uint32_t version)
     p->allow_recurrent = (int)neat_get_u32(r);
     p->max_nodes = neat_get_u32(r);
     p->net_step = version >= 3 ? (int)neat_get_u32(r) : NEAT_STEP_SYNC;
-    if (version < 4) {
-        /* before NEAT C++'s switches: every one at this library's rule */
-        neat_params d = neat_params_default();
-        p->profile = d.profile;
-        p->equal_fitness_rule = d.equal_fitness_rule;
-        p->reenable_rule = d.reenable_rule;
-        p->add_conn_rule = d.add_conn_rule;
-        p->recur_only_prob = d.recur_only_prob;
-        p->species_rep = d.species_rep;
-        p->weight_mut_rule = d.weight_mut_rule;
-        p->elitism_rule = d.elitism_rule;
-        p->interspecies_rule = d.interspecies_rule;
-        p->identical_rule = d.identical_rule;
-        p->offspring_rounding = d.offspring_rounding;
-        p->speciate_rule = d.speciate_rule;
-        p->cull_every = d.cull_every;
-        p->cull_age = d.cull_age;
-        p->pop_stagnation_rule = d.pop_stagnation_rule;
-        return;
-    }
+    if (version < 4)
+        return; /* before NEAT C++'s switches: *p came in as neat_params_default(), every one at libneat's rule */
     p->profile = (int)neat_get_u32(r);
     p->equal_fitness_rule = (int)neat_get_u32(r);
     p->reenable_rule = (int)neat_get_u32(r);
@@ -259,7 +242,7 @@ void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len)
 int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset)
 {
     neat_rbuf r;
-    neat_params p;
+    neat_params p = neat_params_default();
     neat_pop *pop = NULL;
     uint32_t i, k, n;
     uint8_t *seen = NULL;
