@@ -179,6 +179,14 @@ foreach(check rundir lock bounds records outputs paths edits counters small)
   set_tests_properties(tools/safety_${check} PROPERTIES ENVIRONMENT "${NEAT_RENDER_ENV}")
 endforeach()
 
+# issue 49: data safety, third pass (tests/tools/safety3.sh)
+foreach(check runfiles dirs world)
+  add_test(NAME tools/safety3_${check}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety3.sh $<TARGET_FILE:duel_evolve>
+                   ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check})
+  set_tests_properties(tools/safety3_${check} PROPERTIES ENVIRONMENT "${NEAT_RENDER_ENV}")
+endforeach()
+
 add_test(NAME tools/duel_run_faults
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/fault.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:fault_shim>
                  ${NEAT_FAULT_CFG} ${NEAT_FAULT_STRIDE})

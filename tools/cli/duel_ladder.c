@@ -136,8 +136,8 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
         const char *in[1];
         in[0] = o->dir;
         snprintf(path, sizeof path, "%s/ladder.csv", o->dir);
-        if (duel_out_allowed("ladder", o->csv != NULL ? "--csv" : "its", o->csv != NULL ? o->csv : path, &kind,
-                             o->force, in, 1) != 0)
+        if (o->csv != NULL ? duel_out_allowed("ladder", "--csv", o->csv, &kind, o->force, in, 1) != 0
+                           : duel_out_own_allowed("ladder", "its", path, &kind, o->force, in, 1) != 0)
             return -1;
     }
     return 0;

@@ -1,11 +1,13 @@
 /* duel_render_cmd.c - `duel_evolve render` (a game's frames as PNG files, and a video through ffmpeg) and `duel_evolve render-net` (a champion's network as PNG through Graphviz dot). */
 #define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #include "duel_cli.h"
@@ -134,6 +136,76 @@ static int duel_rc_is_video(const uint8_t *head, size_t len, const char *path)
 }
 
 static const duel_out_kind duel_rc_frame_kind = {"a frame from duel_evolve render", NULL, duel_rc_is_frame};
+
+/* The number of a frame file's name (frame-NNNNN.png), or -1 for any other name. */
+static long duel_rc_frame_no(const char *name)
+{
+    size_t i;
+    if (strlen(name) != 15 || strncmp(name, "frame-", 6) != 0 || strcmp(name + 11, ".png") != 0)
+        return -1;
+    for (i = 6; i < 11; i++)
+        if (name[i] < '0' || name[i] > '9')
+            return -1;
+    return strtol(name + 6, NULL, 10);
+}
+
+/* Whether the directory dir (when it exists) may take a render's frames: a directory holding nothing but
+ * frame-NNNNN.png files (and temporaries of ours). 0, or 2 after one line naming the first other entry. */
+static int duel_rc_frames_dir(const char *cmd, const char *dir)
+{
+    struct stat st;
+    DIR *d;
+    struct dirent *e;
+    int rc = 0;
+    if (stat(dir, &st) != 0)
+        return 0; /* created */
+    if (!S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "duel_evolve: %s: --out %s is not a directory\n", cmd, dir);
+        return 2;
+    }
+    if ((d = opendir(dir)) == NULL) {
+        fprintf(stderr, "duel_evolve: %s: --out %s: cannot list it: %s\n", cmd, dir, strerror(errno));
+        return 2;
+    }
+    while (rc == 0 && (e = readdir(d)) != NULL) {
+        const char *n = e->d_name;
+        size_t len = strlen(n);
+        char esc[1100];
+        if (strcmp(n, ".") == 0 || strcmp(n, "..") == 0 || duel_rc_frame_no(n) >= 0 ||
+            (len > 4 && strcmp(n + len - 4, ".tmp") == 0 && (strncmp(n, "frame-", 6) == 0 || strncmp(n, ".probe.", 7) == 0)))
+            continue;
+        fprintf(stderr, "duel_evolve: %s: --out %s holds '%s', which is not a frame of duel_evolve render: choose "
+                        "another --out (an empty or new directory)\n", cmd, dir, duel_text_escape(n, esc, sizeof esc));
+        rc = 2;
+    }
+    closedir(d);
+    return rc;
+}
+
+/* Removes the frames an earlier render left in dir beyond the n this one wrote, so the directory holds one game.
+ * 0, or -1 after one line. */
+static int duel_rc_drop_frames(const char *dir, unsigned n)
+{
+    char path[DUEL_RC_PATH];
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int rc = 0;
+    if (d == NULL)
+        return 0;
+    while ((e = readdir(d)) != NULL) {
+        long no = duel_rc_frame_no(e->d_name);
+        if (no < (long)n)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (unlink(path) != 0 && errno != ENOENT) {
+            fprintf(stderr, "duel_evolve: render: %s: cannot remove an earlier render's frame: %s\n", path,
+                    strerror(errno));
+            rc = -1;
+        }
+    }
+    closedir(d);
+    return rc;
+}
 static const duel_out_kind duel_rc_net_kind = {"a picture from duel_evolve render-net", NULL, duel_rc_is_net};
 static const duel_out_kind duel_rc_video_kind = {"a video from duel_evolve render", NULL, duel_rc_is_video};
 
@@ -306,7 +378,7 @@ int duel_cmd_render(int argc, char **argv)
     char video_target[DUEL_RC_PATH];
     char ffmpeg[DUEL_RC_PATH], path[DUEL_RC_PATH], err[512], suffix[64];
     int i, n_pos = 0, size = 600, every = 1, fps = 30, food = DUEL_TRAINING, a_west = 1, game_opts = 0, rc = 0;
-    int force = 0;
+    int force = 0, dir_exists;
     unsigned flags = 0, n_out = 0;
     duel_replay rep;
     duel_render ren;
@@ -425,11 +497,12 @@ int duel_cmd_render(int argc, char **argv)
         return 2;
     }
     /* every frame this will write: one already there that is not a frame of ours is not replaced */
+    dir_exists = access(dir, F_OK) == 0;
     for (k = 0, n_out = 0;; k += (size_t)every) {
         if (k > rep.n - 1)
             k = rep.n - 1;
         snprintf(path, sizeof path, "%s/frame-%05u.png", dir, n_out++);
-        if (duel_out_allowed("render", "--out", path, &duel_rc_frame_kind, force, pos, 2) != 0) {
+        if (dir_exists && duel_out_allowed("render", "--out", path, &duel_rc_frame_kind, force, pos, 2) != 0) {
             duel_replay_free(&rep);
             return 2;
         }
@@ -445,6 +518,11 @@ int duel_cmd_render(int argc, char **argv)
     snprintf(suffix, sizeof suffix, "/.probe.%ld.tmp", (long)getpid());
     if (duel_rc_probe(dir, suffix) != 0) {
         fprintf(stderr, "duel_evolve: render: %s: cannot write in the directory: %s\n", dir, strerror(errno));
+        duel_replay_free(&rep);
+        return 2;
+    }
+    /* an existing --out holds frames of an earlier render only: nothing else is mixed with this game's */
+    if (duel_rc_frames_dir("render", dir) != 0) {
         duel_replay_free(&rep);
         return 2;
     }
@@ -478,6 +556,8 @@ int duel_cmd_render(int argc, char **argv)
     }
     secs = duel_rc_now() - t0;
     duel_render_close(&ren);
+    if (rc == 0 && duel_rc_drop_frames(dir, n_out) != 0)
+        rc = 1;
 
     if (rc == 0) {
         const duel_frame *last = &rep.frames[rep.n - 1];

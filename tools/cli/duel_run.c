@@ -1096,12 +1096,28 @@ static void duel_start_words(const duel_run *R, char *buf, size_t cap)
     }
 }
 
+/* 1 when dir/name is an empty directory. */
+static int duel_empty_dir(const char *dir, const char *name)
+{
+    char path[4200];
+    DIR *d;
+    struct dirent *e;
+    int empty = 1;
+    duel_path(path, sizeof path, dir, name);
+    if ((d = opendir(path)) == NULL)
+        return 0;
+    while (empty && (e = readdir(d)) != NULL)
+        empty = strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0;
+    closedir(d);
+    return empty;
+}
+
 /* Whether an existing directory may become a new run: empty, or a run's own
  * files only, with a config.ini (if any) that a run wrote. 1, or 0 with the
  * first foreign entry in what. */
 static int duel_dir_is_runs(const char *dir, char *what, size_t cap)
 {
-    char path[4200];
+    char path[4200], first[300] = "";
     DIR *d = opendir(dir);
     struct dirent *e;
     uint8_t *text;
@@ -1112,13 +1128,25 @@ static int duel_dir_is_runs(const char *dir, char *what, size_t cap)
         return 0;
     }
     while (ok && (e = readdir(d)) != NULL) {
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0 || duel_is_run_file(e->d_name))
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
-        snprintf(what, cap, "holds '%s', which is not a run's", e->d_name);
-        ok = 0;
+        if (!duel_is_run_file(e->d_name)) {
+            char esc[1100];
+            snprintf(what, cap, "holds '%s', which is not a run's", duel_text_escape(e->d_name, esc, sizeof esc));
+            ok = 0;
+        } else if (first[0] == '\0' && strcmp(e->d_name, ".lock") != 0 && strcmp(e->d_name, "config.ini.tmp") != 0 &&
+                   !duel_empty_dir(dir, e->d_name)) {
+            snprintf(first, sizeof first, "%s", e->d_name);
+        }
     }
     closedir(d);
     duel_path(path, sizeof path, dir, "config.ini");
+    /* a run writes config.ini before anything else it keeps: files of a run's names without it are someone
+     * else's (a user's generations.csv) */
+    if (ok && first[0] != '\0' && access(path, F_OK) != 0) {
+        snprintf(what, cap, "holds '%s' but no config.ini of a run", first);
+        ok = 0;
+    }
     if (ok && duel_file_read(path, 1u << 20, &text, &len) == 0) {
         static const char mark[] = "; the effective configuration of this run";
         ok = len >= sizeof mark - 1 && memcmp(text, mark, sizeof mark - 1) == 0;
@@ -1186,9 +1214,10 @@ static int duel_prepare_dir(duel_run *R)
         duel_path(path, sizeof path, R->dir, files[i]);
         unlink(path);
     }
-    if (duel_copy_opponents(R) != 0)
+    /* config.ini first: it is what marks the directory as a run's if this is killed before the rest */
+    if (duel_write_config(R) != 0)
         return 1;
-    return duel_write_config(R) != 0 ? 1 : 0;
+    return duel_copy_opponents(R) != 0 ? 1 : 0;
 }
 
 static void duel_unlock(void)

@@ -469,9 +469,13 @@ int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t 
     return duel_set_in(cfg, section, key, value, err, err_len);
 }
 
-/* "profile=..." or "neat.profile=..." */
-static int duel_set_is_profile(const char *set)
+/* "profile=...", "neat.profile=..." or "world.rules=...": a setting the others of its section refine */
+static int duel_set_is_first(const char *set)
 {
+    if (strncmp(set, "world.", 6) == 0)
+        return strncmp(set + 6, "rules", 5) == 0 && set[11] == '=';
+    if (strncmp(set, "rules", 5) == 0 && set[5] == '=')
+        return 1;
     if (strncmp(set, "neat.", 5) == 0)
         set += 5;
     return strncmp(set, "profile", 7) == 0 && set[7] == '=';
@@ -483,7 +487,7 @@ int duel_config_set_list(duel_config *cfg, const char *const *sets, uint32_t n, 
     uint32_t pass, k;
     for (pass = 0; pass < 2; pass++)
         for (k = 0; k < n; k++)
-            if (duel_set_is_profile(sets[k]) == (pass == 0) && duel_config_set(cfg, sets[k], err, err_len) != 0) {
+            if (duel_set_is_first(sets[k]) == (pass == 0) && duel_config_set(cfg, sets[k], err, err_len) != 0) {
                 if (bad != NULL)
                     *bad = k;
                 return -1;

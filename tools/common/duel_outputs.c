@@ -88,6 +88,96 @@ static int duel_in_run(const char *rout, const char *rdir)
            strcmp(rest, "compare-cache.csv") != 0;
 }
 
+/* 1 when the file at dir/name starts with mark. */
+static int duel_starts_with(const char *dir, const char *name, const char *mark)
+{
+    char path[PATH_MAX + 64], head[64];
+    size_t k = strlen(mark);
+    FILE *f;
+    int yes;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if ((f = duel_fopen_regular(path)) == NULL)
+        return 0;
+    yes = fread(head, 1, k, f) == k && memcmp(head, mark, k) == 0;
+    fclose(f);
+    return yes;
+}
+
+/* What the (resolved) directory dir is: 1 a run directory (a checkpoint.bin, or a config.ini a run wrote), 2 an
+ * experiment directory (a plan.ini an experiment wrote), 0 neither. */
+static int duel_dir_role(const char *dir)
+{
+    char path[PATH_MAX + 64];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
+    if (lstat(path, &st) == 0 || duel_starts_with(dir, "config.ini", "; the effective configuration of this run"))
+        return 1;
+    return duel_starts_with(dir, "plan.ini", "; the plan of this experiment") ? 2 : 0;
+}
+
+/* 1 for the name of a champion file (a blob or genome, or a temporary of one); a picture drawn beside it is not. */
+static int duel_is_champion_name(const char *name)
+{
+    size_t n = strlen(name);
+    if (n > 4 && strcmp(name + n - 4, ".tmp") == 0)
+        n -= 4;
+    return (n >= 5 && strncmp(name + n - 5, ".blob", 5) == 0) || (n >= 7 && strncmp(name + n - 7, ".genome", 7) == 0);
+}
+
+/* The run or experiment directory whose own file the resolved path rout is (its records, checkpoint,
+ * configuration, log, champions, opponents, games or ladder; an experiment's plan, configurations and report),
+ * copied to dir; 0 when it is none. A compare cache is not one: compare checks its own. */
+static int duel_protected(const char *rout, char dir[PATH_MAX + 1])
+{
+    size_t n = strlen(rout);
+    int depth;
+    memcpy(dir, rout, n + 1);
+    for (depth = 1; depth <= 2; depth++) {
+        char *slash = strrchr(dir, '/');
+        const char *rest;
+        int role;
+        if (slash == NULL || slash == dir)
+            return 0;
+        *slash = '\0';
+        rest = rout + (slash - dir) + 1;
+        role = duel_dir_role(dir);
+        if (role == 1) {
+            if (depth == 2)
+                return (strncmp(rest, "champions/", 10) == 0 && duel_is_champion_name(rest + 10)) ||
+                       strncmp(rest, "opponents/", 10) == 0 || strncmp(rest, "games/", 6) == 0;
+            return duel_is_run_file(rest) && strcmp(rest, "compare-cache.csv") != 0 &&
+                   strcmp(rest, "compare-cache.csv.tmp") != 0;
+        }
+        if (role == 2) {
+            if (depth == 2)
+                return strncmp(rest, "configs/", 8) == 0 || strncmp(rest, "report/", 7) == 0;
+            return strcmp(rest, "plan.ini") == 0 || strcmp(rest, ".lock") == 0 || strcmp(rest, "plan.ini.tmp") == 0;
+        }
+    }
+    return 0;
+}
+
+/* Whether the directory that would hold path exists (a missing one is reported up front, not after the work). */
+static int duel_parent_ok(const char *cmd, const char *opt, const char *path)
+{
+    char dir[PATH_MAX + 1];
+    const char *slash = strrchr(path, '/');
+    struct stat st;
+    if (slash == NULL)
+        return 0;
+    if (strlen(path) >= sizeof dir) {
+        fprintf(stderr, "duel_evolve: %s: %s %s: name too long\n", cmd, opt, path);
+        return 2;
+    }
+    snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "duel_evolve: %s: %s %s: cannot write: %s %s\n", cmd, opt, path, dir,
+                stat(dir, &st) != 0 ? "does not exist" : "is not a directory");
+        return 2;
+    }
+    return 0;
+}
+
 int duel_out_is_duel_lcm(const uint8_t *head, size_t len, const char *path)
 {
     (void)path;
@@ -96,17 +186,24 @@ int duel_out_is_duel_lcm(const uint8_t *head, size_t len, const char *path)
            memcmp(head + 28, "DUEL_", 5) == 0;
 }
 
-int duel_out_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
-                     const char *const *inputs, size_t n_inputs)
+static int duel_out_check(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
+                          const char *const *inputs, size_t n_inputs, int own)
 {
-    char rout[PATH_MAX + 1], rin[PATH_MAX + 1];
+    char rout[PATH_MAX + 1], rin[PATH_MAX + 1], rdir[PATH_MAX + 1];
     uint8_t head[DUEL_OUT_HEAD];
     struct stat st, si;
     size_t i, got = 0;
     ssize_t r;
-    int fd, resolved = duel_resolve(path, rout) == 0;
+    int fd, resolved;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "duel_evolve: %s: %s %s is a directory: name a file\n", cmd, opt, path);
+        return 2;
+    }
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
-        return 0; /* a pipe or device (written in place: /dev/null twice is fine), a directory (the writer says so) */
+        return 0; /* a pipe or device: written in place (/dev/null twice is fine) */
+    if (!own && duel_parent_ok(cmd, opt, path) != 0)
+        return 2; /* (a command's own file is in the run it reads, which it checks first) */
+    resolved = duel_resolve(path, rout) == 0;
     for (i = 0; i < n_inputs; i++) {
         if (inputs[i] == NULL)
             continue;
@@ -121,6 +218,13 @@ int duel_out_allowed(const char *cmd, const char *opt, const char *path, const d
                     cmd, opt, path, inputs[i]);
             return 2;
         }
+    }
+    /* a run's or an experiment's own file is never an output: --force does not lift this */
+    if (resolved && !own && duel_protected(rout, rdir)) {
+        fprintf(stderr, "duel_evolve: %s: %s %s is a file of the %s directory %s: refusing to write there "
+                        "(choose a path outside it)\n", cmd, opt, path, duel_dir_role(rdir) == 2 ? "experiment" : "run",
+                rdir);
+        return 2;
     }
     if (stat(path, &st) != 0 || st.st_size == 0 || force)
         return 0; /* missing (created), empty (nothing to lose), or --force */
@@ -145,4 +249,16 @@ int duel_out_allowed(const char *cmd, const char *opt, const char *path, const d
     fprintf(stderr, "duel_evolve: %s: %s %s exists and is not %s: refusing to replace it (--force replaces it)\n", cmd,
             opt, path, kind->name);
     return 2;
+}
+
+int duel_out_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
+                     const char *const *inputs, size_t n_inputs)
+{
+    return duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 0);
+}
+
+int duel_out_own_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
+                         const char *const *inputs, size_t n_inputs)
+{
+    return duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 1);
 }

@@ -19,6 +19,11 @@ typedef struct duel_out_kind {
 
 /* Whether command cmd may write its output opt (an option's name, "-o")
  * at path:
+ * - never a directory, and never in a directory that does not exist (both
+ *   refused before any work);
+ * - never a file of any run or experiment directory (a run's checkpoint,
+ *   configuration, records, log, champions, opponents, games, ladder; an
+ *   experiment's plan, configurations, report), even with force;
  * - never over one of its inputs (the same file however named, a run
  *   directory's own records when an input is a run directory, or another
  *   output of the same command): refused even with force;
@@ -29,6 +34,11 @@ typedef struct duel_out_kind {
  * 0, or 2 after one line on stderr. inputs may hold NULLs (skipped). */
 int duel_out_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
                      const char *const *inputs, size_t n_inputs);
+
+/* duel_out_allowed for the file a command keeps in the run it reads (ladder's
+ * RUN/ladder.csv): the run-file rule above is not applied. */
+int duel_out_own_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
+                         const char *const *inputs, size_t n_inputs);
 
 /* 1 when a and b name the same file (both existing: the same inode; else
  * the same resolved directory and name). */

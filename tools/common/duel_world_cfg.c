@@ -13,17 +13,26 @@ const char *const duel_world_keys[] = {"rules",        "radius",     "start_west
                                        "food_range",   "robot_range", "energy_scale", "wall_range"};
 const size_t duel_world_n_keys = sizeof duel_world_keys / sizeof duel_world_keys[0];
 
-/* A finite number at s, the blanks after it skipped; NULL when there is none. */
-static const char *duel_num(const char *s, double *v)
+/* A finite number at s in the syntax of every INI key (neat_config_number_len: no hex, inf or nan), the blanks
+ * after it skipped; NULL when there is none. */
+static const char *duel_num_of(const char *s, double *v, int integer)
 {
     char *end;
+    size_t n = neat_config_number_len(s, integer);
+    if (n == 0)
+        return NULL;
     errno = 0;
     *v = strtod(s, &end);
-    if (end == s || errno == ERANGE || !isfinite(*v))
+    if (end != s + n || errno == ERANGE || !isfinite(*v))
         return NULL;
     while (*end == ' ' || *end == '\t')
         end++;
     return end;
+}
+
+static const char *duel_num(const char *s, double *v)
+{
+    return duel_num_of(s, v, 0);
 }
 
 /* A length or energy in units, to Q16.16 rounded to nearest; lo..hi units. */
@@ -52,7 +61,7 @@ static int duel_q16_key(const char *key, const char *value, double lo, double hi
 static int duel_u16_key(const char *key, const char *value, uint16_t *out, char *err, size_t err_len)
 {
     double v;
-    const char *rest = duel_num(value, &v);
+    const char *rest = duel_num_of(value, &v, 1);
     if (rest == NULL || *rest != '\0' || v < 1 || v > 65535 || v != floor(v)) {
         snprintf(err, err_len, "[world] %s = '%s': expected a whole number of units from 1 to 65535", key, value);
         return -1;

@@ -128,11 +128,7 @@ const char *neat_config_suggest(const char *name, const char *const *known, size
     return best_d <= 1 + strlen(name) / 3 ? best : NULL;
 }
 
-/* The only number syntax accepted: an integer is decimal digits (no sign,
- * point, exponent or 0x: "1e1" and "0x10" are errors, not 10 and 16); a real
- * is [+-]digits[.digits][e[+-]digits] or [+-].digits[...], so strtod's hex,
- * "inf" and "nan" forms never reach it. */
-static int neat_config_decimal(const char *v, int integer)
+size_t neat_config_number_len(const char *v, int integer)
 {
     const char *p = v;
     int digits = 0;
@@ -143,7 +139,7 @@ static int neat_config_decimal(const char *v, int integer)
         digits++;
     }
     if (integer)
-        return digits > 0 && *p == '\0';
+        return digits > 0 ? (size_t)(p - v) : 0;
     if (*p == '.') {
         p++;
         while (*p >= '0' && *p <= '9') {
@@ -154,15 +150,23 @@ static int neat_config_decimal(const char *v, int integer)
     if (digits == 0)
         return 0;
     if (*p == 'e' || *p == 'E') {
-        p++;
-        if (*p == '+' || *p == '-')
-            p++;
-        if (!(*p >= '0' && *p <= '9'))
-            return 0;
-        while (*p >= '0' && *p <= '9')
-            p++;
+        const char *q = p + 1;
+        if (*q == '+' || *q == '-')
+            q++;
+        if (*q >= '0' && *q <= '9') {
+            while (*q >= '0' && *q <= '9')
+                q++;
+            p = q;
+        }
     }
-    return *p == '\0';
+    return (size_t)(p - v);
+}
+
+/* The whole of v is a number in the one syntax (neat_config_number_len). */
+static int neat_config_decimal(const char *v, int integer)
+{
+    size_t n = neat_config_number_len(v, integer);
+    return n > 0 && v[n] == '\0';
 }
 
 int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value, char *err, size_t err_len)

@@ -34,6 +34,13 @@ typedef struct neat_cfg_key {
 const neat_cfg_key *neat_config_keys(size_t *n);
 
 /* Parses value into the field of base described by k; -1 with err on a bad value. */
+/* The one number syntax every INI key takes: the length of the number at the
+ * start of v, 0 when there is none. An integer is decimal digits (no sign,
+ * point, exponent or 0x: "1e1" and "0x10" are not 10 and 16); a real is
+ * [+-]digits[.digits][e[+-]digits] or [+-].digits[...] (never strtod's hex,
+ * "inf" or "nan"). */
+size_t neat_config_number_len(const char *v, int integer);
+
 int neat_config_parse_value(const neat_cfg_key *k, void *base, const char *value, char *err, size_t err_len);
 /* Sets key from a table; -1 with a "did you mean" in err if unknown. */
 int neat_config_set_in(const neat_cfg_key *keys, size_t n_keys, void *base, const char *key, const char *value,

@@ -35,10 +35,11 @@ static void ini_copy(char *dst, const char *b, const char *e)
     dst[e - b] = '\0';
 }
 
-/* [neat] profile comes first: it sets the switches every other [neat] key may refine */
+/* [neat] profile and [world] rules come first: each sets the values every other key of its section refines */
 static int ini_first(const char *section, const char *key)
 {
-    return strcmp(section, "neat") == 0 && strcmp(key, "profile") == 0;
+    return (strcmp(section, "neat") == 0 && strcmp(key, "profile") == 0) ||
+           (strcmp(section, "world") == 0 && strcmp(key, "rules") == 0);
 }
 
 /* One pass over the text: pass 0 delivers only the keys ini_first names,

@@ -21,9 +21,9 @@
 #define NEAT_INI_MAX_FILE (1u << 20)
 #define NEAT_INI_MAX_KEYS 512 /* far more than every key of every section */
 
-/* Called for each key in file order, except that a [neat] profile key comes
- * before all the others (a profile sets the values the other keys refine:
- * docs/parameters.md): 0, or -1 with one line in err (no file or line: the
+/* Called for each key in file order, except that a [neat] profile key and a
+ * [world] rules key come before all the others (each sets the values the
+ * other keys of its section refine: docs/parameters.md, docs/duel-world.md): 0, or -1 with one line in err (no file or line: the
  * reader adds them). */
 typedef int (*neat_ini_handler)(void *user, const char *section, const char *key, const char *value, char *err,
                                 size_t err_len);

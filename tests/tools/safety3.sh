@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# safety3.sh DUEL_EVOLVE CONFIG PLAN CHECK - data safety, third pass (issue 49; docs/hardening.md): no output reaches
+# a run's own files, --force included; a plan is checked whole; one policy for edits. Each case failed before it.
+# CONFIG is a small run (tests/tools/coev-small.ini), PLAN a small experiment (tests/tools/tiny-plan.ini).
+set -euo pipefail
+duel=$1 cfg=$2 plan=$3 what=$4
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=/dev/null
+. "$(dirname "$0")/cli_lib.sh"
+snapshot() { (cd "$1" && find . -type f ! -name .lock -print0 | sort -z | xargs -0 md5sum); }
+
+case "$what" in
+runfiles)
+  # §2: an output path that is a file of any run or experiment directory is refused with exit 2, --force or not,
+  # and the refusal does not suggest --force
+  "$duel" run --config "$cfg" --out "$tmp/r" --generations 2 --quiet
+  cp "$tmp/r/champions/gen-00001.blob" "$tmp/in.blob"
+  before=$(snapshot "$tmp/r")
+  for f in checkpoint.bin config.ini generations.csv dominance.csv log.txt champions/gen-00000.blob; do
+    for force in "" --force; do
+      expect_bad "play: --trace .*r/$f is a file of the run directory .*r: refusing to write there (choose a path outside it)" \
+        play "$tmp/in.blob" builtin:forager --trace "$tmp/r/$f" $force
+      expect_bad "play: --lcm-log .*r/$f is a file of the run directory" play "$tmp/in.blob" builtin:forager --lcm-log "$tmp/r/$f" $force
+      expect_bad "dot: -o .*r/$f is a file of the run directory" dot "$tmp/in.blob" -o "$tmp/r/$f" $force
+      expect_bad "export: -o .*r/$f is a file of the run directory" export "$tmp/in.blob" --c-array x -o "$tmp/r/$f" $force
+      expect_bad "export: --header .*r/$f is a file of the run directory" \
+        export "$tmp/in.blob" --c-array x -o "$tmp/x.c" --header "$tmp/r/$f" $force
+      expect_bad "render-net: --out .*r/$f is a file of the run directory" render-net "$tmp/in.blob" --out "$tmp/r/$f" $force
+      expect_bad "node world: --lcm-log .*r/$f is a file of the run directory" \
+        node world --food 3 --lcm memq:// --lcm-log "$tmp/r/$f" $force
+    done
+  done
+  if command -v ffmpeg > /dev/null; then
+    expect_bad "render: --video .*r/checkpoint.bin is a file of the run directory" \
+      render "$tmp/in.blob" builtin:forager --out "$tmp/frames" --every 300 --video "$tmp/r/checkpoint.bin" --force
+  fi
+  # a champion file that does not exist yet is a run's file too (the run writes it next generation)
+  expect_bad "dot: -o .*r/champions/gen-00009.blob is a file of the run directory" dot "$tmp/in.blob" -o "$tmp/r/champions/gen-00009.blob"
+  [ "$(snapshot "$tmp/r")" = "$before" ] || fail "a run's files changed"
+  # an experiment's run: ladder --world X --csv RUN/ladder.csv is refused, and so is its plan or report
+  "$duel" experiment "$plan" --out "$tmp/e" --set generations=1 --quiet > /dev/null
+  run1=$(ls -d "$tmp/e/runs/"*-1 | head -1)
+  ebefore=$(snapshot "$tmp/e")
+  expect_bad "ladder: --csv .*ladder.csv is a file of the run directory" ladder "$run1" --top --world "$(dirname "$0")/fixtures/world-variant.ini" --csv "$run1/ladder.csv" --force
+  expect_bad "ladder: --csv .*e/plan.ini is a file of the experiment directory" ladder "$run1" --top --csv "$tmp/e/plan.ini" --force
+  expect_bad "dot: -o .*e/report/table1.csv is a file of the experiment directory" dot "$tmp/in.blob" -o "$tmp/e/report/table1.csv" --force
+  expect_bad "dot: -o .*e/configs/x.ini is a file of the experiment directory" dot "$tmp/in.blob" -o "$tmp/e/configs/x.ini"
+  [ "$(snapshot "$tmp/e")" = "$ebefore" ] || fail "an experiment's files changed"
+  # what still works: a run's own ladder, and outputs beside (not inside) a run's files
+  "$duel" ladder "$run1" --top > /dev/null || fail "ladder refused the run's own ladder.csv"
+  "$duel" dot "$tmp/in.blob" -o "$tmp/r/notes.dot" || fail "a file of another name in a run directory"
+  ;;
+dirs)
+  # §2: run --out refuses a non-empty directory that is not a run it made; an output directory given as a file (or
+  # a file in a missing directory) is refused before any game; render --out keeps one game's frames only
+  for f in generations.csv dominance.csv strength.csv; do
+    mkdir "$tmp/u-$f"
+    printf 'generation,mine\n1,2\n' > "$tmp/u-$f/$f"
+    expect_bad "u-$f is not empty and not a run directory (it holds '$f' but no config.ini of a run): choose another --out" \
+      run --config "$cfg" --out "$tmp/u-$f" --generations 1
+    [ "$(cat "$tmp/u-$f/$f")" = "$(printf 'generation,mine\n1,2')" ] || fail "run --out replaced the user's $f"
+    [ "$(ls -A "$tmp/u-$f")" = "$f" ] || fail "run --out left files in the user's directory: $(ls -A "$tmp/u-$f")"
+  done
+  "$duel" run --config "$cfg" --out "$tmp/r" --generations 2 --quiet
+  "$duel" run --config "$cfg" --out "$tmp/s" --generations 2 --seed 2 --quiet
+  mkdir "$tmp/d"
+  expect_bad "ladder: --csv .*d is a directory: name a file" ladder "$tmp/r" --csv "$tmp/d"
+  expect_bad "compare: --csv .*d is a directory: name a file" compare "$tmp/r" --against "$tmp/s" --csv "$tmp/d"
+  expect_bad "compare: --json .*d is a directory: name a file" compare "$tmp/r" --against "$tmp/s" --json "$tmp/d"
+  expect_bad "ladder: --csv .*nowhere/x.csv: cannot write: .*nowhere does not exist" ladder "$tmp/r" --csv "$tmp/nowhere/x.csv"
+  printf 'x\n' > "$tmp/file"
+  expect_bad "compare: --csv .*file/x.csv: cannot write: .*file is not a directory" compare "$tmp/r" --against "$tmp/s" --csv "$tmp/file/x.csv"
+  expect_bad "play: --trace .*d is a directory: name a file" play "$tmp/r/champions/gen-00001.blob" builtin:forager --trace "$tmp/d"
+  [ ! -e "$tmp/r/compare-cache.csv" ] && [ ! -e "$tmp/r/ladder.csv" ] || fail "games were played before the refusal"
+  # render --out: a directory holding anything but frames is refused; an earlier, longer game's frames are removed
+  blob=$tmp/r/champions/gen-00001.blob
+  expect_bad "render: --out .*file/frame-00000.png: cannot write: .*file is not a directory" render "$blob" builtin:forager --out "$tmp/file" --every 300
+  mkdir "$tmp/fr"
+  printf 'notes\n' > "$tmp/fr/notes.txt"
+  expect_bad "render: --out .*fr holds 'notes.txt', which is not a frame of duel_evolve render" \
+    render "$blob" builtin:forager --out "$tmp/fr" --every 300
+  [ "$(ls -A "$tmp/fr")" = notes.txt ] || fail "render wrote into a directory holding others"
+  expect_bad "render: --out .*r holds '.*', which is not a frame" render "$blob" builtin:forager --out "$tmp/r" --every 300
+  rm "$tmp/fr/notes.txt"
+  "$duel" render "$blob" builtin:forager --out "$tmp/fr" --every 10 > /dev/null
+  many=$(ls "$tmp/fr" | wc -l)
+  "$duel" render "$blob" builtin:forager --out "$tmp/fr" --every 300 > "$tmp/out"
+  few=$(ls "$tmp/fr" | wc -l)
+  grep -q "^$few frames of" "$tmp/out" || fail "render left other frames: $few files, $(grep frames "$tmp/out")"
+  [ "$many" -gt "$few" ] || fail "the test's first render was not longer ($many, $few)"
+  ;;
+world)
+  # §1: [world] rules = applies first wherever it stands (in a file, in --set lists); the section takes the one
+  # number syntax of every INI key
+  printf '[world]\nfood_range = 300\nrules = v1\n' > "$tmp/w.ini"
+  "$duel" config --config "$tmp/w.ini" --dump > "$tmp/d1"
+  grep -q "^food_range = 300$" "$tmp/d1" || fail "an override before rules = was dropped: $(grep food_range "$tmp/d1")"
+  printf '[world]\nrules = v1\nfood_range = 300\n' > "$tmp/w2.ini"
+  "$duel" config --config "$tmp/w2.ini" --dump > "$tmp/d2"
+  cmp -s "$tmp/d1" "$tmp/d2" || fail "rules = before or after an override differ"
+  "$duel" config --config "$cfg" --set world.food_range=300 --set world.rules=v1 --dump > "$tmp/d3"
+  grep -q "^food_range = 300$" "$tmp/d3" || fail "--set world.rules= after an override dropped it"
+  for v in 0x100 1e3 +300 300.0 ' 3e2'; do
+    printf '[world]\nfood_range = %s\n' "$v" > "$tmp/n.ini"
+    expect_bad "n.ini:2: \[world\] food_range = '.*': expected a whole number of units" config --config "$tmp/n.ini" --dump
+  done
+  for v in 0x10 inf nan 1e 0x1p3; do
+    printf '[world]\nradius = %s\n' "$v" > "$tmp/n.ini"
+    expect_bad "n.ini:2: \[world\] radius = '$v': expected a number" config --config "$tmp/n.ini" --dump
+    printf '[world]\nstart_west = %s 0 0\n' "$v" > "$tmp/n.ini"
+    expect_bad "n.ini:2: \[world\] start_west = '$v 0 0': expected x y heading" config --config "$tmp/n.ini" --dump
+  done
+  # what the syntax allows: signs, points and exponents in real keys
+  printf '[world]\nradius = +1.25e1\nstart_west = +100 .3e3 -90\n' > "$tmp/ok.ini"
+  "$duel" config --config "$tmp/ok.ini" --dump | grep -q "^radius = 12.5$" || fail "a real in the common syntax"
+  ;;
+*)
+  fail "unknown check $what"
+  ;;
+esac
+echo "ok: $what"
