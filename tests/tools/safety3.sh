@@ -115,6 +115,53 @@ world)
   printf '[world]\nradius = +1.25e1\nstart_west = +100 .3e3 -90\n' > "$tmp/ok.ini"
   "$duel" config --config "$tmp/ok.ini" --dump | grep -q "^radius = 12.5$" || fail "a real in the common syntax"
   ;;
+plan)
+  # §3, §4: a plan's seed is refused or honoured, never ignored; a plan is checked whole before its first run
+  presets=$(cd "$(dirname "$plan")/../../configs" && pwd)
+  mkdir -p "$tmp/plans"
+  base() { printf '[experiment]\npresets = %s\nseed = 3\n[all runs]\ngenerations = 1\npop_size = 16\ncompare_configs = 12\n' "$presets"; }
+  { base; printf 'seed = 7\n[method c]\npreset = paper\nruns = 2\n'; } > "$tmp/plans/s1.ini"
+  expect_bad "s1.ini:8: seed = 7: the runs of an experiment take their seeds from \[experiment\] seed" experiment "$tmp/plans/s1.ini" --dry-run
+  { base; printf '[method c]\npreset = paper\nruns = 2\nrun.seed = 7\n'; } > "$tmp/plans/s2.ini"
+  expect_bad "s2.ini:11: run.seed = 7: the runs of an experiment take their seeds" experiment "$tmp/plans/s2.ini" --out "$tmp/never"
+  [ ! -e "$tmp/never" ] || fail "a refused plan made its directory"
+  { base; printf '[method c]\npreset = paper\nruns = 2\n'; } > "$tmp/plans/ok.ini"
+  "$duel" experiment "$tmp/plans/ok.ini" --out "$tmp/x" --set seed=40 --quiet > /dev/null 2>&1
+  grep -q "^seed = 40$" "$tmp/x/plan.ini" || fail "--set seed= was not the experiment's seed: $(grep seed "$tmp/x/plan.ini")"
+  grep -q "^seed = 40$" "$tmp/x/runs/c-1/config.ini" && grep -q "^seed = 41$" "$tmp/x/runs/c-2/config.ini" ||
+    fail "--set seed= did not reach the runs"
+  "$duel" experiment resume "$tmp/x" --quiet > /dev/null 2>&1 || fail "resume of a plan given --set seed="
+  # a start genome that is not one is refused before any run (and by --dry-run)
+  printf 'junk\n' > "$tmp/plans/bad.genome"
+  { base; printf '[method c]\npreset = paper\nruns = 2\nstart = genome:bad.genome\n'; } > "$tmp/plans/g.ini"
+  expect_bad "experiment: \[method c\]: .*bad.genome: not a valid genome file" experiment "$tmp/plans/g.ini" --dry-run
+  expect_bad "experiment: \[method c\]: .*bad.genome: not a valid genome file" experiment "$tmp/plans/g.ini" --out "$tmp/never"
+  [ ! -e "$tmp/never" ] || fail "a plan with a bad start genome made its directory"
+  # a method that cannot be measured: against fixed opponents, or in another world
+  { base; printf '[method c]\npreset = paper\nruns = 2\n[method v]\npreset = vs-forager-hunter\nruns = 1\n'; } > "$tmp/plans/f.ini"
+  expect_bad "\[method v\]: a run against fixed opponents (\[opponents\] play) has no dominance tournament" \
+    experiment "$tmp/plans/f.ini" --dry-run
+  cp "$(dirname "$0")/fixtures/world-variant.ini" "$tmp/plans/w.ini"
+  { base; printf '[method c]\npreset = paper\nruns = 2\n[method w]\npreset = paper\nruns = 1\nfood_range = 300\n'; } > "$tmp/plans/w2.ini"
+  expect_bad "\[method w\] plays in world custom [0-9a-f]* but \[method c\] in world v1: an experiment compares its methods in one world" \
+    experiment "$tmp/plans/w2.ini" --dry-run
+  # [opponents] play: a relative path is the plan's (never a same-named file where the runs work), control
+  # characters are refused
+  mkdir "$tmp/work"
+  "$duel" run --config "$cfg" --out "$tmp/src" --generations 2 --quiet
+  { base; printf '[method c]\npreset = paper\nruns = 2\nplay = opp.blob, builtin:idle\n'; } > "$tmp/plans/o.ini"
+  (cd "$tmp/work" && cp "$tmp/src/champions/gen-00001.blob" opp.blob &&
+    expect_bad "play: opp.blob (relative to .*plans): No such file or directory" experiment ../plans/o.ini --dry-run)
+  expect_bad "play: a control character (byte 0x0a) at offset 1 of its value" run --config "$cfg" --out "$tmp/never" \
+    --set "play=a
+b"
+  # compare and ladder name a fixed-opponent run's checkpoint for what it is
+  "$duel" run --config "$presets/vs-forager-hunter.ini" --set pop_size=16 --generations 1 --out "$tmp/fx" --quiet
+  expect_bad "fx/checkpoint.bin: the checkpoint of a run against fixed opponents (one population, no dominance tournament)" \
+    compare "$tmp/fx" --against "$tmp/src"
+  expect_bad "fx/checkpoint.bin: the checkpoint of a run against fixed opponents" compare "$tmp/src" --against "$tmp/fx"
+  expect_bad "fx/checkpoint.bin: the checkpoint of a run against fixed opponents" ladder "$tmp/fx" --top
+  ;;
 *)
   fail "unknown check $what"
   ;;

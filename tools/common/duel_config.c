@@ -254,9 +254,16 @@ static const char *duel_key_home(const char *name)
 /* [opponents] play = a, b, ...: each a builtin:NAME or a file path (no commas) */
 static int duel_opp_play(duel_opponents *o, const char *v, char *err, size_t err_len)
 {
-    const char *p = v;
+    const char *p = v, *stop0;
     uint32_t n = 0;
     duel_opponents got = *o;
+    for (stop0 = v; *stop0 != '\0'; stop0++)
+        /* a newline would write a config.ini that never reads back: a run that can never be resumed */
+        if ((unsigned char)*stop0 < 0x20 || *stop0 == 0x7f) {
+            snprintf(err, err_len, "[opponents] play: a control character (byte 0x%02x) at offset %d of its value",
+                     (unsigned)(unsigned char)*stop0, (int)(stop0 - v));
+            return -1;
+        }
     while (*p != '\0') {
         const char *end = strchr(p, ','), *stop;
         size_t len;

@@ -152,6 +152,26 @@ void duel_cli_ctrl_close(duel_cli_ctrl *c)
     c->ctrl.net = NULL;
 }
 
+void duel_fixed_run_refused(const char *prefix, const char *path)
+{
+    fprintf(stderr, "duel_evolve: %s%s: the checkpoint of a run against fixed opponents (one population, no dominance "
+                    "tournament): compare, ladder and experiment measure coevolution runs; play its champions "
+                    "instead (champions/gen-G.blob)\n", prefix, path);
+}
+
+int duel_run_is_fixed(const char *dir)
+{
+    char path[4200], head[8];
+    FILE *f;
+    int yes;
+    if ((size_t)snprintf(path, sizeof path, "%s/checkpoint.bin", dir) >= sizeof path ||
+        (f = duel_fopen_regular(path)) == NULL)
+        return 0;
+    yes = fread(head, 1, 8, f) == 8 && memcmp(head, "NEATCKPT", 8) == 0;
+    fclose(f);
+    return yes;
+}
+
 int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
 {
     uint8_t *buf;
@@ -164,6 +184,11 @@ int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
             return 1;
         fprintf(stderr, "duel_evolve: %s%s: cannot read: %s\n", prefix, path,
                 errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
+        return -1;
+    }
+    if (len >= 8 && memcmp(buf, "NEATCKPT", 8) == 0) {
+        duel_fixed_run_refused(prefix, path);
+        free(buf);
         return -1;
     }
     err = neat_coev_load(out, buf, len, NULL, &off);

@@ -48,6 +48,10 @@ struct neat_coev;
  * refused at an offset (naming both format versions when it is a format
  * this build does not read). */
 int duel_ckpt_load(const char *prefix, const char *path, struct neat_coev **out);
+/* 1 when dir's checkpoint.bin is a run's against fixed opponents (a population's, "NEATCKPT"). */
+int duel_run_is_fixed(const char *dir);
+/* The one line that refuses such a run's checkpoint (at path) where a coevolution's is needed. */
+void duel_fixed_run_refused(const char *prefix, const char *path);
 void duel_cli_ctrl_close(duel_cli_ctrl *c);
 
 /* The world a coevolution checkpoint (read from path) was made in: its game

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "duel_ctrl.h"
 #include "duel_dominance.h"
 #include "duel_levels.h"
 
@@ -11,6 +12,11 @@ int duel_levels_read(const char *dir, duel_level **out, uint32_t *n_out)
     duel_dominance_row *rows;
     duel_level *levels;
     uint32_t n, k;
+    if (duel_run_is_fixed(dir)) {
+        snprintf(blob, sizeof blob, "%s/checkpoint.bin", dir);
+        duel_fixed_run_refused("", blob);
+        return -1;
+    }
     if (duel_dominance_read(dir, &rows, &n, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s\n", err);
         return -1;

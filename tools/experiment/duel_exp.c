@@ -530,6 +530,18 @@ static int duel_exp_any_best(const duel_plan *p)
 
 /* Every run of the plan to the end, jobs at a time: the reference method's first, the start = best methods' once
  * the champion is chosen. 0, or the exit status after one line. */
+/* "; its log: DIR/log.txt" when the failed run wrote one, else where its error is (never a log that is not there). */
+static const char *duel_exp_log_hint(const char *dir, char *buf, size_t cap)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/log.txt", dir);
+    if (access(path, F_OK) == 0)
+        snprintf(buf, cap, "; its log: %s", path);
+    else
+        snprintf(buf, cap, "; it wrote no log: its error is the line above");
+    return buf;
+}
+
 static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs, uint32_t threads,
                               uint32_t cmp_threads)
 {
@@ -537,6 +549,7 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
     uint32_t k, running = 0, ref_left = 0;
     int best_ready = !duel_exp_any_best(p), failed = 0;
     int forwarded = 0;
+    char hint[4300];
     for (k = 0; k < s->n_runs; k++)
         ref_left += s->runs[k].method == p->ref && s->runs[k].state != DUEL_RUN_DONE;
     for (;;) {
@@ -602,9 +615,10 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
             if (!duel_exp_stop) {
                 if (s->tty && !s->quiet)
                     fprintf(stderr, "\r\033[K");
-                fprintf(stderr, "duel_evolve: experiment: %s failed (%s %d); its log: %s/log.txt\n", s->runs[k].dir,
+                fprintf(stderr, "duel_evolve: experiment: %s failed (%s %d)%s\n", s->runs[k].dir,
                         WIFEXITED(status) ? "exit status" : "signal",
-                        WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status), s->runs[k].dir);
+                        WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status),
+                        duel_exp_log_hint(s->runs[k].dir, hint, sizeof hint));
                 failed = 1;
             }
         }
@@ -674,6 +688,7 @@ static int duel_exp_play_mpi(duel_exp_sched *s)
     duel_exp_slot *slot;
     uint8_t *cmp_done, *lad_done;
     int best_ready = !duel_exp_any_best(p), failed = 0, forwarded = 0;
+    char hint[4300];
     for (k = 0; k < s->n_runs; k++)
         left += s->runs[k].state != DUEL_RUN_DONE;
     n_slots = duel_mpi_exp_open(left);
@@ -811,12 +826,11 @@ static int duel_exp_play_mpi(duel_exp_sched *s)
         if (status != 0 && !duel_exp_stop && !failed) {
             if (s->tty && !s->quiet)
                 fprintf(stderr, "\r\033[K");
-            fprintf(stderr, "duel_evolve: experiment: %s of %s failed (exit status %d)%s%s%s\n",
+            fprintf(stderr, "duel_evolve: experiment: %s of %s failed (exit status %d)%s\n",
                     slot[which].kind == DUEL_TASK_RUN ? "the run" : slot[which].kind == DUEL_TASK_COMPARE ?
                                                                      "the comparison" : "the ladder",
-                    s->runs[k].dir, status, slot[which].kind == DUEL_TASK_RUN ? "; its log: " : "",
-                    slot[which].kind == DUEL_TASK_RUN ? s->runs[k].dir : "",
-                    slot[which].kind == DUEL_TASK_RUN ? "/log.txt" : "");
+                    s->runs[k].dir, status,
+                    slot[which].kind == DUEL_TASK_RUN ? duel_exp_log_hint(s->runs[k].dir, hint, sizeof hint) : "");
             failed = status == 2 ? 2 : 1;
         }
         slot[which].kind = DUEL_TASK_NONE;

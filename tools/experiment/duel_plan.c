@@ -8,6 +8,8 @@
 
 #include "duel_files.h"
 #include "duel_plan.h"
+#include "duel_runtag.h"
+#include "duel_world_cfg.h"
 #include "duel_text.h"
 #include "neat_ini.h"
 
@@ -51,6 +53,13 @@ static int duel_plan_u32(const char *v, uint32_t lo, uint32_t hi, uint32_t *out)
 static int duel_plan_add_set(char (*sets)[DUEL_PLAN_SET_LEN], uint32_t *n, const char *key, const char *value,
                              char *err, size_t err_len)
 {
+    if (strcmp(key, "seed") == 0 || strcmp(key, "run.seed") == 0) {
+        /* every run would be given it, and it would be replaced by the experiment's: refused, not ignored */
+        snprintf(err, err_len, "%s = %s: the runs of an experiment take their seeds from [experiment] seed (run k of "
+                               "a method plays with seed + k - 1): set it there, or give --set seed=N on the command "
+                               "line", key, value);
+        return -1;
+    }
     if (*n == DUEL_PLAN_MAX_SETS) {
         snprintf(err, err_len, "more than %d overrides in one section", DUEL_PLAN_MAX_SETS);
         return -1;
@@ -88,6 +97,53 @@ static int duel_plan_resolve_start(char *set, const char *base, char *err, size_
         return -1;
     }
     strcpy(set + plen, real);
+    return 0;
+}
+
+/* An override "play=..." (or "opponents.play=...") whose opponents include relative paths: each made absolute
+ * against base, as start paths are (a same-named file where the runs work is never the one used); builtins stay.
+ * Each file must exist now. 0, or -1 with err. */
+static int duel_plan_resolve_play(char *set, const char *base, char *err, size_t err_len)
+{
+    const char *eq = strchr(set, '='), *p;
+    char out[DUEL_PLAN_SET_LEN], joined[8600], real[4200];
+    size_t klen = eq != NULL ? (size_t)(eq - set) : 0, n;
+    if (eq == NULL || !((klen == 4 && strncmp(set, "play", 4) == 0) ||
+                        (klen == 14 && strncmp(set, "opponents.play", 14) == 0)))
+        return 0;
+    n = (size_t)snprintf(out, sizeof out, "%.*s", (int)(klen + 1), set);
+    for (p = eq + 1; *p != '\0';) {
+        const char *end = strchr(p, ','), *stop;
+        char item[4200];
+        size_t len;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        stop = end != NULL ? end : p + strlen(p);
+        while (stop > p && (stop[-1] == ' ' || stop[-1] == '\t'))
+            stop--;
+        len = (size_t)(stop - p);
+        if (len >= sizeof item)
+            len = sizeof item - 1; /* refused by the [opponents] reader as too long */
+        snprintf(item, sizeof item, "%.*s", (int)len, p);
+        if (item[0] != '\0' && item[0] != '/' && strncmp(item, "builtin:", 8) != 0) {
+            if ((size_t)snprintf(joined, sizeof joined, "%s/%s", base, item) >= sizeof joined ||
+                realpath(joined, real) == NULL) {
+                snprintf(err, err_len, "play: %s (relative to %s): %s", item, base,
+                         strlen(joined) >= sizeof joined - 1 ? "path too long" : strerror(errno));
+                return -1;
+            }
+            snprintf(item, sizeof item, "%s", real);
+        }
+        n += (size_t)snprintf(out + n, n < sizeof out ? sizeof out - n : 0, "%s%s", p == eq + 1 ? "" : ", ", item);
+        if (n >= sizeof out) {
+            snprintf(err, err_len, "play: too long once its paths are made absolute");
+            return -1;
+        }
+        if (end == NULL)
+            break;
+        p = end + 1;
+    }
+    memcpy(set, out, n + 1);
     return 0;
 }
 
@@ -131,7 +187,8 @@ static int duel_plan_handler(void *user, const char *section, const char *key, c
     }
     if (strcmp(section, "all runs") == 0) {
         if (duel_plan_add_set(p->sets, &p->n_sets, key, value, err, err_len) != 0 ||
-            (!r->from_dir && duel_plan_resolve_start(p->sets[p->n_sets - 1], r->dir, err, err_len) != 0))
+            (!r->from_dir && (duel_plan_resolve_start(p->sets[p->n_sets - 1], r->dir, err, err_len) != 0 ||
+                              duel_plan_resolve_play(p->sets[p->n_sets - 1], r->dir, err, err_len) != 0)))
             return -1;
         return duel_plan_try_set(p->sets[p->n_sets - 1], err, err_len);
     }
@@ -178,7 +235,8 @@ static int duel_plan_handler(void *user, const char *section, const char *key, c
         m->start_best = 1;
     } else {
         if (duel_plan_add_set(m->sets, &m->n_sets, key, value, err, err_len) != 0 ||
-            (!r->from_dir && duel_plan_resolve_start(m->sets[m->n_sets - 1], r->dir, err, err_len) != 0))
+            (!r->from_dir && (duel_plan_resolve_start(m->sets[m->n_sets - 1], r->dir, err, err_len) != 0 ||
+                              duel_plan_resolve_play(m->sets[m->n_sets - 1], r->dir, err, err_len) != 0)))
             return -1;
         return duel_plan_try_set(m->sets[m->n_sets - 1], err, err_len);
     }
@@ -324,6 +382,16 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
             snprintf(err, err_len, "[method %s] (%s): %s", m->name, path, msg);
             return -1;
         }
+        /* the start topology opened and checked now, as each run will (start = best is made by the reference) */
+        if (!m->start_best && m->cfg.opp.n == 0) {
+            neat_coev *c = NULL;
+            int e = duel_coev_new(&c, &m->cfg, msg, sizeof msg);
+            neat_coev_free(c);
+            if (e != 0) {
+                snprintf(err, err_len, "[method %s]: %s", m->name, msg);
+                return -1;
+            }
+        }
         m->cfg_text = duel_plan_cfg_text(&m->cfg);
         if (m->cfg_text == NULL) {
             snprintf(err, err_len, "out of memory");
@@ -332,6 +400,24 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
         if (from_dir && (duel_plan_same_preset(m, path, err, err_len) != 0 ||
                          duel_plan_agrees(p, m, path, err, err_len) != 0))
             return -1;
+        /* every method can be measured: the report compares each method's dominants with the reference's
+         * rankings in one world, so a method without a dominance tournament, or of another world, is refused
+         * now, not after its runs */
+        if (m->cfg.opp.n > 0) {
+            snprintf(err, err_len, "[method %s]: a run against fixed opponents ([opponents] play) has no dominance "
+                                   "tournament, and an experiment measures every method by its dominants against "
+                                   "the %s rankings: run it with duel_evolve run instead", m->name,
+                     p->reference[0] != '\0' ? p->reference : p->m[0].name);
+            return -1;
+        }
+        if (i > 0 && !duel_rules_equal(&m->cfg.world, &p->m[0].cfg.world)) {
+            char a[40], b[40];
+            snprintf(err, err_len, "[method %s] plays in world %s but [method %s] in world %s: an experiment "
+                                   "compares its methods in one world", m->name,
+                     duel_world_label(&m->cfg.world, a, sizeof a), p->m[0].name,
+                     duel_world_label(&p->m[0].cfg.world, b, sizeof b));
+            return -1;
+        }
     }
     return 0;
 }
@@ -368,6 +454,15 @@ static int duel_plan_parse(duel_plan **out, const char *path, const char *text, 
             return -1;
         }
         snprintf(key, sizeof key, "%.*s", (int)(eq - extra[i]), extra[i]);
+        if (strcmp(key, "seed") == 0 || strcmp(key, "run.seed") == 0 || strcmp(key, "experiment.seed") == 0) {
+            /* the experiment's seed: run k of each method plays with seed + k - 1 */
+            if (duel_plan_u32(eq + 1, 0, 0xffffffffu, &p->seed) != 0) {
+                char e[1100];
+                snprintf(err, err_len, "--set %s: expected 0 to 4294967295", duel_text_escape(extra[i], e, sizeof e));
+                return -1;
+            }
+            continue;
+        }
         if (duel_plan_try_set(extra[i], msg, sizeof msg) != 0) {
             {
                 char e[1100];
@@ -395,7 +490,8 @@ static int duel_plan_parse(duel_plan **out, const char *path, const char *text, 
             k = p->n_sets - 1;
         }
         /* a path on the command line is the working directory's */
-        if (duel_plan_resolve_start(p->sets[k], ".", msg, sizeof msg) != 0) {
+        if (duel_plan_resolve_start(p->sets[k], ".", msg, sizeof msg) != 0 ||
+            duel_plan_resolve_play(p->sets[k], ".", msg, sizeof msg) != 0) {
             {
                 char e[1100];
                 snprintf(err, err_len, "--set %s: %s", duel_text_escape(extra[i], e, sizeof e), msg);
