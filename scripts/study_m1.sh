@@ -30,6 +30,9 @@ cells=(
 )
 want=" $* "
 mkdir -p "$out"
+# one writer of OUT at a time: two would play the same runs twice and write every row twice
+exec 9> "$out/.study_m1.lock"
+flock -n 9 || { echo "study_m1.sh: $out is in use by another study_m1.sh: wait for it, or choose another OUT" >&2; exit 2; }
 csv=$out/m1.csv
 [ -s "$csv" ] || echo "cell,opponent,seed,wins,losses,draws,timeouts,margin,champion_hidden,champion_connections,run_seconds" > "$csv"
 for c in "${cells[@]}"; do
@@ -38,14 +41,20 @@ for c in "${cells[@]}"; do
   for opp in forager-hunter forager; do
     for seed in 1 2 3 4 5; do
       d=$out/$name/$opp-$seed
-      if grep -q "^$name,$opp,$seed," "$csv"; then continue; fi
+      # done: a whole row (11 fields, ending in a number and a newline); a cut row is not a finished run
+      if grep -Eq "^$name,$opp,$seed,([^,]*,){7}[0-9.]+\$" "$csv"; then continue; fi
+      if grep -q "^$name,$opp,$seed," "$csv"; then
+        echo "study_m1.sh: $csv: the row of $name $opp seed $seed is cut short: delete it, then run this again" >&2
+        exit 2
+      fi
       args=(--set "opponents.play=builtin:$opp")
       for s in $sets; do args+=(--set "$s"); done
       t0=$(date +%s.%N)
+      # never removed: a run that died before its first checkpoint is started over by duel_evolve run itself,
+      # and anything else there is refused by it (docs/hardening.md)
       if [ -f "$d/checkpoint.bin" ]; then
         "$duel" resume "$d" --quiet
       else
-        rm -rf "$d"
         "$duel" run --config "$root/configs/vs-forager-hunter.ini" --out "$d" --seed "$seed" "${args[@]}" --quiet
       fi
       t1=$(date +%s.%N)

@@ -27,8 +27,45 @@ def mann_whitney_p(a, b):
     return n / total
 
 
+FIELDS = ["cell", "opponent", "seed", "wins", "losses", "draws", "timeouts", "margin", "champion_hidden",
+          "champion_connections", "run_seconds"]
+
+
+def read_rows(path):
+    """The rows of M1.csv, each whole and once; SystemExit(2) with a message naming the line otherwise (a cut
+    row, a row written twice, a header of another file): a row is never counted, or dropped, silently."""
+    with open(path, newline="") as f:
+        text = f.read()
+    if not text.endswith("\n"):
+        raise SystemExit("%s: the last line is cut short (no newline): a run killed while its row was written; "
+                         "delete that line and run scripts/study_m1.sh again (it plays that run again)" % path)
+    lines = text.split("\n")[:-1]
+    if not lines or lines[0].rstrip("\r").split(",") != FIELDS:
+        raise SystemExit("%s:1: not an M1 table (expected the header %s)" % (path, ",".join(FIELDS)))
+    rows, seen = [], {}
+    for n, line in enumerate(lines[1:], start=2):
+        line = line.rstrip("\r")
+        vals = next(csv.reader([line])) if line else []
+        if len(vals) != len(FIELDS):
+            raise SystemExit("%s:%d: %d fields, expected %d: a cut or edited row (delete it and run "
+                             "scripts/study_m1.sh again)" % (path, n, len(vals), len(FIELDS)))
+        r = dict(zip(FIELDS, vals))
+        try:
+            for k in ("seed", "wins", "losses", "draws", "timeouts", "margin"):
+                int(r[k])
+        except ValueError:
+            raise SystemExit("%s:%d: '%s' is not a whole number: a cut or edited row" % (path, n, r[k])) from None
+        key = (r["cell"], r["opponent"], r["seed"])
+        if key in seen:
+            raise SystemExit("%s:%d: cell %s, opponent %s, seed %s a second time (first on line %d): a run counted "
+                             "twice (two scripts writing one file?); keep one row" % ((path, n) + key + (seen[key],)))
+        seen[key] = n
+        rows.append(r)
+    return rows
+
+
 def main():
-    rows = list(csv.DictReader(open(sys.argv[1])))
+    rows = read_rows(sys.argv[1])
     cells, data = [], {}
     for r in rows:
         if r["cell"] not in cells:

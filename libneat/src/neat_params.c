@@ -193,8 +193,10 @@ int neat_params_check(const neat_params *p, const char **field)
         bad = "weight_replace_range";
     else if (!neat_prob_ok(p->add_conn_prob))
         bad = "add_conn_prob";
-    else if (!neat_prob_ok(p->add_node_prob) || p->add_node_prob + p->add_conn_prob > 1.0)
+    else if (!neat_prob_ok(p->add_node_prob))
         bad = "add_node_prob";
+    else if (p->add_node_prob + p->add_conn_prob > 1.0)
+        bad = "add_node_prob + add_conn_prob"; /* one draw picks at most one of them: their sum is at most 1 */
     else if (p->add_conn_tries > NEAT_PARAM_MAX_TRIES)
         bad = "add_conn_tries";
     else if (p->allow_recurrent != 0 && p->allow_recurrent != 1)

@@ -82,8 +82,10 @@ def _call(command: str, args: list[str], path: str, keep_stdout: bool = False) -
     return out
 
 
-def _options(generations: int | None, threads: int | None, sets: Iterable[str], quiet: bool) -> list[str]:
+def _options(generations: int | None, threads: int | None, sets: str | Iterable[str], quiet: bool) -> list[str]:
     a: list[str] = []
+    if isinstance(sets, (str, bytes)):
+        sets = [os.fsdecode(sets)]  # one override, not its characters one by one
     if generations is not None:
         a += ["--generations", str(generations)]
     if threads is not None:
@@ -102,11 +104,12 @@ def run(
     generations: int | None = None,
     seed: int | None = None,
     threads: int | None = None,
-    set: Iterable[str] = (),
+    set: str | Iterable[str] = (),
     quiet: bool = True,
 ) -> RunDir:
     """duel_evolve run --config CONFIG --out OUT: a coevolution (or a run against fixed opponents) into a new run
-    directory. config is a configuration file or a DuelConfig; set lists KEY=VALUE overrides (as --set). Returns
+    directory. config is a configuration file or a DuelConfig; set is one KEY=VALUE override or a list of them
+    (as --set). Returns
     the run directory; RunError with the command's message when it refuses or fails."""
     args = ["--out", os.fspath(out)] + _options(generations, threads, set, quiet)
     if seed is not None:
@@ -128,12 +131,17 @@ def resume(
     *,
     generations: int | None = None,
     threads: int | None = None,
-    set: Iterable[str] = (),
+    set: str | Iterable[str] = (),
     quiet: bool = True,
+    shorten: bool = False,
 ) -> RunDir:
     """duel_evolve resume DIR: continues a run (to generations in all, when given; a finished run is only
-    repaired). RunError with the command's message when it refuses or fails."""
-    _call("resume", [os.fspath(directory)] + _options(generations, threads, set, quiet), os.fspath(directory))
+    repaired). shorten: fewer generations in all than config.ini's, for good (--shorten). set: one KEY=VALUE
+    override or a list of them. RunError with the command's message when it refuses or fails."""
+    args = [os.fspath(directory)] + _options(generations, threads, set, quiet)
+    if shorten:
+        args.append("--shorten")
+    _call("resume", args, os.fspath(directory))
     return RunDir(directory)
 
 

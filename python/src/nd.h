@@ -6,6 +6,8 @@
 #include <nanobind/ndarray.h>
 
 #include <cstdint>
+#include <atomic>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,12 @@ struct nd_error : std::exception {
 std::string nd_strerror(int code);
 // Raises code with "what: the C library's text".
 [[noreturn]] void nd_fail(int code, const std::string &what);
+// A Python int argument as an unsigned count or seed: a negative or too large one is ArgumentError (a ValueError)
+// naming it, not nanobind's generic TypeError. lo: the least allowed.
+uint64_t nd_u64(nb::int_ v, const char *name);
+uint32_t nd_u32(nb::int_ v, const char *name, uint32_t lo = 0);
+// The truth value of a Python object, as Python's if reads it (a numpy bool, None, 1, a list).
+bool nd_truth(nb::handle v);
 
 // A genome of its own (a copy: what the population does next never changes it), with the shape and step mode its
 // network is built with. Inside Population.run's fitness call it borrows the population's genome instead of copying
@@ -103,6 +111,42 @@ void nd_bind_genome(nb::module_ &m);
 void nd_bind_network(nb::module_ &m);
 void nd_bind_population(nb::module_ &m);
 
+// A path argument: a str or any os.PathLike (pathlib.Path), as Python's own open takes (the caster below).
+struct nd_path {
+    std::string s;
+    std::string string() const { return s; }
+};
+
+namespace nanobind::detail {
+template <> struct type_caster<nd_path> {
+    NB_TYPE_CASTER(nd_path, const_name("str | os.PathLike[str]"))
+    bool from_python(handle src, uint8_t, cleanup_list *) noexcept
+    {
+        PyObject *fs = PyOS_FSPath(src.ptr());
+        if (fs == nullptr) {
+            PyErr_Clear();
+            return false;
+        }
+        bool ok = PyUnicode_Check(fs);
+        if (ok) {
+            Py_ssize_t n = 0;
+            const char *c = PyUnicode_AsUTF8AndSize(fs, &n);
+            ok = c != nullptr;
+            if (ok)
+                value.s.assign(c, (size_t)n);
+            else
+                PyErr_Clear();
+        }
+        Py_DECREF(fs);
+        return ok;
+    }
+    static handle from_cpp(const nd_path &p, rv_policy, cleanup_list *) noexcept
+    {
+        return PyUnicode_FromStringAndSize(p.s.data(), (Py_ssize_t)p.s.size());
+    }
+};
+} // namespace nanobind::detail
+
 // The parameters object bound as neat_duel.Params.
 struct nd_params {
     neat_params p = neat_params_default();
@@ -112,12 +156,18 @@ struct nd_params {
 struct nd_native_game {
     neat_play_fn play = nullptr;
     void *ud = nullptr;
+    std::unique_lock<std::mutex> lock; // the game object's, held until the generation is played
 };
-// 1 with out filled when game is a built-in game object (prepared for c's parameters and next generation), else 0.
+// 1 with out filled when game is a built-in game object (locked for this caller, waited for without the
+// interpreter lock, and prepared for c's parameters and next generation), else 0. Raises ParamError when c's
+// networks do not fit the game.
 bool nd_native_game_of(nb::handle game, neat_coev *c, nd_native_game *out);
 // A coevolution (neat_duel.Coevolution).
 struct nd_coev {
     neat_coev *c = nullptr;
+    // 1 while a generation is played (step or run): a second step, or a read of the state, from the game function
+    // or another thread is refused instead of reaching memory the step is changing
+    std::atomic<int> busy{0};
     nd_coev() = default;
     nd_coev(const nd_coev &) = delete;
     nd_coev &operator=(const nd_coev &) = delete;

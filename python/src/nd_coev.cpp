@@ -21,6 +21,31 @@ static neat_coev *nd_c(const nd_coev &s)
     return s.c;
 }
 
+static const char nd_busy_msg[] = ": this Coevolution is already playing a generation (called from its game function, "
+                                  "or from another thread while it plays): one call at a time";
+
+// nd_c for every call that reads or changes the populations: refused while a generation is played.
+static neat_coev *nd_c_idle(const nd_coev &s, const char *what)
+{
+    if (s.busy.load() != 0)
+        throw nd_error(NEAT_E_STATE, std::string(what) + nd_busy_msg);
+    return nd_c(s);
+}
+
+// Marks a generation in play for its lifetime (refusing a second one).
+struct nd_busy {
+    nd_coev &s;
+    nd_busy(nd_coev &s_, const char *what) : s(s_)
+    {
+        nd_c(s);
+        if (s.busy.exchange(1) != 0)
+            throw nd_error(NEAT_E_STATE, std::string(what) + nd_busy_msg);
+    }
+    ~nd_busy() { s.busy.store(0); }
+    nd_busy(const nd_busy &) = delete;
+    nd_busy &operator=(const nd_busy &) = delete;
+};
+
 // A batch of games played by a Python function play(a, b, config, a_first, seed) -> 1, -1 or 0. The networks of a
 // batch are built once per genome; each game starts from reset networks. A Python exception must not cross
 // libneat's C frames: it is kept here, the batch fails, and it is raised again once neat_coev_step has returned
@@ -103,7 +128,8 @@ static nb::dict nd_report(const neat_coev_report &r)
 // One generation with game: a Python function, or a built-in game object that plays in C (nd_duel.cpp).
 static nb::dict nd_step(nd_coev &s, nb::handle game)
 {
-    neat_coev *c = nd_c(s);
+    nd_busy busy(s, "step");
+    neat_coev *c = s.c;
     neat_coev_report rep;
     std::memset(&rep, 0, sizeof rep);
     nd_native_game native;
@@ -132,7 +158,7 @@ static nb::bytes nd_coev_bytes(const nd_coev &s)
 {
     uint8_t *buf = nullptr;
     size_t len = 0;
-    int err = neat_coev_save(nd_c(s), &buf, &len);
+    int err = neat_coev_save(nd_c_idle(s, "saving"), &buf, &len);
     if (err)
         nd_fail(err, "saving the coevolution");
     nb::bytes b((const char *)buf, len);
@@ -167,9 +193,10 @@ void nd_bind_coev(nb::module_ &m)
                         "each host playing the other population's best species' champions and its hall of fame;\n"
                         "the dominance tournament records every new dominant strategy. The game is yours (a Python\n"
                         "function) or the built-in robot duel (neat_duel.Duel), played in C on every core.")
-        .def("__init__", [](nd_coev *self, const nd_params &params, uint64_t seed, const nd_genome *start,
+        .def("__init__", [](nd_coev *self, const nd_params &params, nb::int_ seed_arg, const nd_genome *start,
                             uint32_t species_opponents, uint32_t hof_opponents, uint32_t first_opponents,
                             uint32_t compare_configs, bool random_fitness) {
+                uint64_t seed = nd_u64(seed_arg, "seed");
                 new (self) nd_coev();
                 neat_coev_params cp = neat_coev_params_default();
                 cp.species_opponents = species_opponents;
@@ -206,15 +233,17 @@ void nd_bind_coev(nb::module_ &m)
              "a_first says whether a takes the first side; seed is the game's own (the same on every\n"
              "machine). Returns the generation's record. A game that raises stops the generation: the\n"
              "exception goes through and the coevolution is unchanged.")
-        .def("run", [](nd_coev &s, nb::handle game, uint32_t generations, nb::object until) {
-                if (generations == 0)
-                    throw nd_error(NEAT_E_ARG, "generations: at least 1");
+        .def("run", [](nd_coev &s, nb::handle game, nb::int_ gens, nb::object until) {
+                uint32_t generations = nd_u32(gens, "generations", 1);
                 nb::list out;
                 for (uint32_t g = 0; g < generations; g++) {
                     nb::dict r = nd_step(s, game);
                     out.append(r);
-                    if (!until.is_none() && nb::cast<bool>(until(r)))
+                    if (!until.is_none() && nd_truth(until(r)))
                         break;
+                    // Ctrl-C between generations (a generation played in C is whole, and the state consistent)
+                    if (PyErr_CheckSignals() != 0)
+                        throw nb::python_error();
                 }
                 return out;
             }, nb::arg("game"), nb::arg("generations"), nb::arg("until") = nb::none(),
@@ -228,7 +257,7 @@ void nd_bind_coev(nb::module_ &m)
         .def("population", [](const nd_coev &s, const std::string &which) {
                 if (which != "A" && which != "B")
                     throw nd_error(NEAT_E_ARG, "population: 'A' or 'B'");
-                const neat_pop *p = neat_coev_pop(nd_c(s), which == "A" ? 0 : 1);
+                const neat_pop *p = neat_coev_pop(nd_c_idle(s, "population"), which == "A" ? 0 : 1);
                 std::vector<nb::object> v;
                 for (uint32_t i = 0; i < neat_pop_size(p); i++)
                     v.push_back(nb::cast(nd_genome_copy(neat_pop_genome(p, i), *neat_pop_params(p))));
@@ -236,7 +265,7 @@ void nd_bind_coev(nb::module_ &m)
             }, nb::arg("which"), nb::sig("def population(self, which: str) -> list[Genome]"),
             "Copies of population 'A' or 'B''s genomes.")
         .def_prop_ro("champion", [](const nd_coev &s) -> nb::object {
-                const neat_genome *g = neat_coev_champion(nd_c(s));
+                const neat_genome *g = neat_coev_champion(nd_c_idle(s, "champion"));
                 if (g == nullptr)
                     return nb::none();
                 return nb::cast(nd_genome_copy(g, *neat_pop_params(neat_coev_pop(s.c, 0))));
@@ -244,7 +273,7 @@ void nd_bind_coev(nb::module_ &m)
         .def("hall_of_fame", [](const nd_coev &s, const std::string &which) {
                 if (which != "A" && which != "B")
                     throw nd_error(NEAT_E_ARG, "hall_of_fame: 'A' or 'B'");
-                neat_coev *c = nd_c(s);
+                neat_coev *c = nd_c_idle(s, "hall_of_fame");
                 uint32_t w = which == "A" ? 0 : 1;
                 std::vector<nb::object> v;
                 for (uint32_t g = 0; g < neat_coev_hof_count(c, w); g++)
@@ -253,7 +282,7 @@ void nd_bind_coev(nb::module_ &m)
             }, nb::arg("which"), nb::sig("def hall_of_fame(self, which: str) -> list[Genome]"),
             "The hall of fame of 'A' or 'B': its best of every generation, oldest first.")
         .def("dominants", [](const nd_coev &s) {
-                neat_coev *c = nd_c(s);
+                neat_coev *c = nd_c_idle(s, "dominants");
                 nb::list out;
                 for (uint32_t k = 0; k < neat_coev_dominant_count(c); k++) {
                     neat_dominant d;
@@ -274,7 +303,8 @@ void nd_bind_coev(nb::module_ &m)
             "The dominance tournament: level, generation, population, genome, and its wins and losses\n"
             "against every earlier dominant (the last one first, as played).")
         .def("to_bytes", &nd_coev_bytes, "The whole state as a coevolution checkpoint (docs/formats.md).")
-        .def("save", [](const nd_coev &s, const std::string &path) {
+        .def("save", [](const nd_coev &s, const nd_path &fpath) {
+                const std::string path = fpath.string();
                 nb::bytes b = nd_coev_bytes(s);
                 nd_write_file(path, (const uint8_t *)b.c_str(), b.size());
             }, nb::arg("path"), "Writes the checkpoint through a temporary file and a rename.")
@@ -282,7 +312,8 @@ void nd_bind_coev(nb::module_ &m)
                 return nd_coev_from_bytes((const uint8_t *)data.c_str(), data.size(), name);
             }, nb::arg("data"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
             "A checkpoint's bytes, checked before any is trusted (FormatError names the byte offset).")
-        .def_static("load", [](const std::string &path) {
+        .def_static("load", [](const nd_path &fpath) {
+                const std::string path = fpath.string();
                 std::vector<uint8_t> b = nd_read_file(path, ND_CKPT_MAX);
                 return nd_coev_from_bytes(b.data(), b.size(), path);
             }, nb::arg("path"), nb::rv_policy::take_ownership,

@@ -28,6 +28,8 @@ struct nd_duel_config {
 
 // The duel as a game: its executor (threads), created for the parameters of the networks it plays.
 struct nd_duel {
+    // one user of the executor at a time: two coevolutions in two threads sharing a Duel take turns
+    std::mutex mu;
     duel_games *dg = nullptr;
     neat_params made_for;
     uint32_t threads = 0;
@@ -52,12 +54,32 @@ static void nd_duel_ready(nd_duel &d, const neat_params &p)
     d.made_for = p;
 }
 
+// The duel's lock, waited for with the interpreter lock released (its holder needs that lock to finish).
+static std::unique_lock<std::mutex> nd_duel_lock(nd_duel &d)
+{
+    std::unique_lock<std::mutex> lk(d.mu, std::defer_lock);
+    if (!lk.try_lock()) {
+        nb::gil_scoped_release nogil;
+        lk.lock();
+    }
+    return lk;
+}
+
 bool nd_native_game_of(nb::handle game, neat_coev *c, nd_native_game *out)
 {
     nd_duel *d = nullptr;
     if (!nb::try_cast<nd_duel *>(game, d) || d == nullptr)
         return false;
-    nd_duel_ready(*d, *neat_pop_params(neat_coev_pop(c, 0)));
+    const neat_params *p = neat_pop_params(neat_coev_pop(c, 0));
+    if (p->n_inputs != DUEL_N_INPUTS - 1 || p->n_outputs != DUEL_N_OUTPUTS)
+        throw nd_error(NEAT_E_PARAM, "the Coevolution's networks have n_inputs = " + std::to_string(p->n_inputs) +
+                                         " and n_outputs = " + std::to_string(p->n_outputs) + ", but the duel's have " +
+                                         std::to_string(DUEL_N_INPUTS - 1) + " inputs and " +
+                                         std::to_string(DUEL_N_OUTPUTS) + " outputs (its sensors and motors; the " +
+                                         "bias is added): Params(n_inputs=" + std::to_string(DUEL_N_INPUTS - 1) +
+                                         ", n_outputs=" + std::to_string(DUEL_N_OUTPUTS) + ")");
+    out->lock = nd_duel_lock(*d);
+    nd_duel_ready(*d, *p);
     duel_games_set_training(d->dg, duel_train_config(&d->config.cfg, neat_coev_generation(c)));
     out->play = duel_games_play;
     out->ud = d->dg;
@@ -146,7 +168,9 @@ void nd_bind_duel(nb::module_ &m)
                                "and [opponents], read, checked and written by the C code duel_evolve uses\n"
                                "(docs/tools.md, docs/duel-world.md).")
         .def(nb::init<>(), "The defaults (configs/paper.ini's values, world v1).")
-        .def_static("from_ini", [](const std::string &path) {
+        .def_static("from_ini", [](const nd_path &fpath) {
+                const std::string path = fpath.string();
+                nd_read_file(path, 1u << 20); // a missing or unreadable file is OSError, as for every loader
                 nd_duel_config *r = new nd_duel_config();
                 char err[4400];
                 if (duel_config_read(&r->cfg, path.c_str(), err, sizeof err) != 0) {
@@ -201,16 +225,21 @@ void nd_bind_duel(nb::module_ &m)
                         "The robot duel (docs/duel-world.md) as a coevolution's game, played in C on `threads`\n"
                         "threads (0: every core) with the interpreter lock released. The results do not depend on\n"
                         "the number of threads.")
-        .def("__init__", [](nd_duel *self, nb::handle config, uint32_t threads) {
+        .def("__init__", [](nd_duel *self, nb::handle config, nb::int_ threads) {
+                uint32_t t = nd_u32(threads, "threads");
                 new (self) nd_duel();
-                self->threads = threads;
+                self->threads = t;
                 if (!config.is_none())
                     self->config.cfg = nb::cast<nd_duel_config &>(config).cfg;
             }, nb::arg("config") = nb::none(), nb::arg("threads") = 0,
             nb::sig("def __init__(self, config: DuelConfig | None = None, threads: int = 0) -> None"),
             "The duel of config's [world] and [run] train_layouts (default: world v1, the training food).")
         .def_prop_ro("threads", [](const nd_duel &d) { return d.threads; }, "Threads (0: every core).")
-        .def("play_many", [](nd_duel &d, nb::list matches) {
+        .def("play_many", [](nd_duel &d, nb::handle matches_arg) {
+                if (!PySequence_Check(matches_arg.ptr()) || PyUnicode_Check(matches_arg.ptr()))
+                    throw nb::type_error(("matches: a list of (a, b, food, a_west) tuples, not " +
+                                          std::string(Py_TYPE(matches_arg.ptr())->tp_name)).c_str());
+                nb::list matches = nb::list(matches_arg);
                 // every distinct network once, as a blob; builtins as duel_net without a blob
                 std::vector<duel_net> nets;
                 std::unordered_map<const void *, uint32_t> index;
@@ -229,20 +258,37 @@ void nd_bind_duel(nb::module_ &m)
                     return (uint32_t)(nets.size() - 1);
                 };
                 for (size_t i = 0; i < ms.size(); i++) {
-                    nb::tuple t = nb::cast<nb::tuple>(matches[i]);
+                    std::string at = "match " + std::to_string(i);
+                    nb::handle h = matches[i];
+                    if (!PyTuple_Check(h.ptr()) && !PyList_Check(h.ptr()))
+                        throw nb::type_error((at + ": a tuple (a, b, food, a_west), not " +
+                                              std::string(Py_TYPE(h.ptr())->tp_name)).c_str());
+                    nb::tuple t = nb::tuple(h);
                     if (t.size() != 4)
-                        throw nd_error(NEAT_E_ARG, "match " + std::to_string(i) + ": (a, b, food, a_west)");
+                        throw nd_error(NEAT_E_ARG, at + ": (a, b, food, a_west)");
                     ms[i].a = id(t[0]);
                     ms[i].b = id(t[1]);
-                    int food = nb::cast<int>(t[2]);
+                    long food_l = 0;
+                    if (!PyLong_Check(t[2].ptr()) || PyBool_Check(t[2].ptr()) || !nb::try_cast<long>(t[2], food_l))
+                        throw nb::type_error((at + ": food: an int (-1 for the training items, or 0..143), not " +
+                                              std::string(Py_TYPE(t[2].ptr())->tp_name)).c_str());
+                    if (food_l < DUEL_TRAINING || food_l >= DUEL_CONFIGS)
+                        food_l = DUEL_CONFIGS; /* refused just below */
+                    int food = (int)food_l;
                     if (food < DUEL_TRAINING || food >= DUEL_CONFIGS)
                         throw nd_error(NEAT_E_ARG, "match " + std::to_string(i) + ": food " + std::to_string(food) +
                                                        ": -1 (training) or 0..143");
                     ms[i].config = food;
-                    ms[i].a_first = nb::cast<bool>(t[3]);
+                    if (!PyBool_Check(t[3].ptr()) && !nb::isinstance<nb::int_>(t[3]) &&
+                        std::string(Py_TYPE(t[3].ptr())->tp_name) != "numpy.bool_" &&
+                        std::string(Py_TYPE(t[3].ptr())->tp_name) != "numpy.bool")
+                        throw nb::type_error((at + ": a_west: a bool, not " +
+                                              std::string(Py_TYPE(t[3].ptr())->tp_name)).c_str());
+                    ms[i].a_first = nd_truth(t[3]);
                     ms[i].result = 0;
                 }
                 neat_params p = neat_params_default();
+                std::unique_lock<std::mutex> lk = nd_duel_lock(d);
                 nd_duel_ready(d, p);
                 int err;
                 {

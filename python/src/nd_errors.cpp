@@ -50,3 +50,41 @@ void nd_bind_errors(nb::module_ &m)
         }
     });
 }
+
+uint64_t nd_u64(nb::int_ v, const char *name)
+{
+    int overflow = 0;
+    long long x = PyLong_AsLongLongAndOverflow(v.ptr(), &overflow);
+    if (x == -1 && PyErr_Occurred())
+        throw nb::python_error();
+    if (overflow < 0 || (overflow == 0 && x < 0))
+        throw nd_error(NEAT_E_ARG, std::string(name) + ": " + nb::cast<std::string>(nb::repr(v)) +
+                                       ": a count or seed is not negative");
+    if (overflow == 0)
+        return (uint64_t)x;
+    unsigned long long u = PyLong_AsUnsignedLongLong(v.ptr());
+    if (u == (unsigned long long)-1 && PyErr_Occurred()) {
+        PyErr_Clear();
+        throw nd_error(NEAT_E_ARG, std::string(name) + ": " + nb::cast<std::string>(nb::repr(v)) +
+                                       ": more than 2^64 - 1");
+    }
+    return (uint64_t)u;
+}
+
+uint32_t nd_u32(nb::int_ v, const char *name, uint32_t lo)
+{
+    uint64_t x = nd_u64(v, name);
+    if (x > 0xffffffffu)
+        throw nd_error(NEAT_E_ARG, std::string(name) + ": " + std::to_string(x) + ": more than 4294967295");
+    if (x < lo)
+        throw nd_error(NEAT_E_ARG, std::string(name) + ": " + std::to_string(x) + ": at least " + std::to_string(lo));
+    return (uint32_t)x;
+}
+
+bool nd_truth(nb::handle v)
+{
+    int t = PyObject_IsTrue(v.ptr());
+    if (t < 0)
+        throw nb::python_error();
+    return t != 0;
+}

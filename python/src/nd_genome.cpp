@@ -168,7 +168,8 @@ void nd_bind_genome(nb::module_ &m)
                 std::free(buf);
                 return b;
             }, "The genome file's bytes (docs/formats.md): every gene, exact weights, a checksum.")
-        .def("save", [](const nd_genome &s, const std::string &path) {
+        .def("save", [](const nd_genome &s, const nd_path &fpath) {
+                const std::string path = fpath.string();
                 uint8_t *buf = nullptr;
                 size_t len = 0;
                 int err = neat_genome_save(&s.gen(), s.n_inputs, s.n_outputs, &buf, &len, nullptr);
@@ -189,7 +190,8 @@ void nd_bind_genome(nb::module_ &m)
             }, nb::arg("data"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
             "A genome file's bytes, checked (magic, version, checksum) before anything is trusted;\n"
             "FormatError names the byte offset of a problem.")
-        .def_static("load", [](const std::string &path) {
+        .def_static("load", [](const nd_path &fpath) {
+                const std::string path = fpath.string();
                 std::vector<uint8_t> b = nd_read_file(path, ND_GENOME_MAX);
                 return nd_genome_from_bytes(b.data(), b.size(), path);
             }, nb::arg("path"), nb::rv_policy::take_ownership,

@@ -11,7 +11,6 @@
 #define ND_BLOB_MAX (1u << 20) // a blob of 256 nodes and 65535 connections is 32 + 4 * 65535 bytes
 
 using in_f64 = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
-using out_f64 = nb::ndarray<double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using in_q15 = nb::ndarray<const int16_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
 nd_network::nd_network()
@@ -112,6 +111,33 @@ static void nd_inputs_any(nd_network &s, nb::handle x)
         }
         return;
     }
+    {
+        // a contiguous float64 buffer (a numpy array) read in place, without the array caster's cost
+        Py_buffer v;
+        if (PyObject_CheckBuffer(x.ptr()) && PyObject_GetBuffer(x.ptr(), &v, PyBUF_STRIDES | PyBUF_FORMAT) == 0) {
+            bool f64 = v.ndim == 1 && v.itemsize == 8 && v.format != nullptr &&
+                       (std::strcmp(v.format, "d") == 0 || std::strcmp(v.format, "<d") == 0 ||
+                        std::strcmp(v.format, "=d") == 0) &&
+                       (v.strides == nullptr || v.strides[0] == 8);
+            if (f64) {
+                size_t len = (size_t)v.shape[0];
+                if (len != n) {
+                    PyBuffer_Release(&v);
+                    throw nd_error(NEAT_E_ARG, "inputs: " + std::to_string(len) + " values for a network of " +
+                                                   std::to_string(n) + " inputs (the bias is added here)");
+                }
+                const double *d = (const double *)v.buf;
+                s.in()[0] = NRT_ONE;
+                for (size_t i = 0; i < n; i++)
+                    s.in()[i + 1] = neat_q15(d[i]);
+                PyBuffer_Release(&v);
+                return;
+            }
+            PyBuffer_Release(&v);
+        } else {
+            PyErr_Clear();
+        }
+    }
     in_f64 arr;
     if (!nb::try_cast<in_f64>(x, arr)) {
         nb::object a = nb::module_::import_("numpy").attr("ascontiguousarray")(x, "float64");
@@ -149,16 +175,41 @@ void nd_bind_network(nb::module_ &m)
             nb::sig("def step(self, inputs: collections.abc.Sequence[float] | numpy.typing.ArrayLike) -> list[float]"),
             "One time step (a control task calls it once per step): inputs a list, tuple or 1-D array of\n"
             "n_inputs numbers; the outputs as a list of floats.")
-        .def("step_into", [](nd_network &s, const in_f64 &x, out_f64 out) {
-                nd_inputs(s, x);
-                if (out.shape(0) != s.n_out())
-                    throw nd_error(NEAT_E_ARG, "out: " + std::to_string(out.shape(0)) + " values for " +
+        .def("step_into", [](nd_network &s, nb::handle x, nb::handle out) {
+                // out through the buffer protocol, checked: a float32 or int64 array, or a read-only one, would
+                // otherwise be converted into a copy that is written and thrown away
+                Py_buffer v;
+                if (!PyObject_CheckBuffer(out.ptr()) ||
+                    PyObject_GetBuffer(out.ptr(), &v, PyBUF_STRIDES | PyBUF_FORMAT) != 0) {
+                    PyErr_Clear();
+                    throw nb::type_error(("out: a float64 array of the outputs, not " +
+                                          std::string(Py_TYPE(out.ptr())->tp_name)).c_str());
+                }
+                bool f64 = v.ndim == 1 && v.itemsize == 8 && v.format != nullptr &&
+                           (std::strcmp(v.format, "d") == 0 || std::strcmp(v.format, "<d") == 0 ||
+                            std::strcmp(v.format, "=d") == 0) &&
+                           (v.strides == nullptr || v.strides[0] == 8);
+                std::string bad = !f64 ? "out: a float64 array of one dimension, contiguous (got format '" +
+                                             std::string(v.format != nullptr ? v.format : "B") + "', " +
+                                             std::to_string(v.ndim) + " dimension" + (v.ndim == 1 ? "" : "s") + ")"
+                                  : v.readonly ? "out: a writable float64 array (this one is read-only)" : "";
+                size_t len = v.ndim >= 1 ? (size_t)v.shape[0] : 0;
+                double *o = (double *)v.buf;
+                PyBuffer_Release(&v); // the array itself stays alive: out holds it
+                if (!bad.empty())
+                    throw nb::type_error(bad.c_str());
+                if (len != s.n_out())
+                    throw nd_error(NEAT_E_ARG, "out: " + std::to_string(len) + " values for " +
                                                    std::to_string(s.n_out()) + " outputs");
+                nd_inputs_any(s, x);
                 nrt_step(&s.ph.net, s.in(), s.out());
-                double *o = out.data();
                 for (size_t i = 0; i < s.n_out(); i++)
                     o[i] = neat_from_q15(s.out()[i]);
-            }, nb::arg("inputs"), nb::arg("out"), "step, writing the outputs into out (no allocation).")
+            }, nb::arg("inputs"), nb::arg("out"),
+            nb::sig("def step_into(self, inputs: collections.abc.Sequence[float] | numpy.typing.ArrayLike, "
+                    "out: numpy.typing.NDArray[numpy.float64]) -> None"),
+            "step, writing the outputs into out (a writable 1-D float64 array of n_outputs values: no\n"
+            "allocation; TypeError for any other array, which could only be written as a copy).")
         .def("settle", [](nd_network &s, nb::handle x, int max_steps) {
                 nd_inputs_any(s, x);
                 if (max_steps < 0)
@@ -202,14 +253,16 @@ void nd_bind_network(nb::module_ &m)
             }, "'sync' (one layer a step) or 'propagate' (feed-forward paths within the step).")
         .def_prop_ro("blob", [](const nd_network &s) { return nb::bytes((const char *)s.ph.blob, s.ph.blob_len); },
                      "The champion blob (docs/formats.md): what duel_evolve writes and a microcontroller loads.")
-        .def("save", [](const nd_network &s, const std::string &path) { nd_write_file(path, s.ph.blob, s.ph.blob_len); },
+        .def("save", [](const nd_network &s, const nd_path &fpath) {
+                const std::string path = fpath.string(); nd_write_file(path, s.ph.blob, s.ph.blob_len); },
              nb::arg("path"), "Writes the blob, through a temporary file and a rename.")
         .def_static("from_blob", [](nb::bytes b, const std::string &name) {
                 return nd_network_from_blob((const uint8_t *)b.c_str(), b.size(), name);
             }, nb::arg("blob"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
             "A network from a blob, checked by the runtime (size, magic, version, checksum, indices) before\n"
             "a byte is trusted; FormatError otherwise.")
-        .def_static("load", [](const std::string &path) {
+        .def_static("load", [](const nd_path &fpath) {
+                const std::string path = fpath.string();
                 std::vector<uint8_t> b = nd_read_file(path, ND_BLOB_MAX);
                 return nd_network_from_blob(b.data(), b.size(), path);
             }, nb::arg("path"), nb::rv_policy::take_ownership,

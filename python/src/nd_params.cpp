@@ -232,7 +232,8 @@ void nd_bind_params(nb::module_ &m)
             "Every parameter by name: Params(**p.to_dict()) == p.")
         .def("to_ini", &nd_to_ini, "The [neat] section with every key, as duel_evolve config --dump writes it.")
         .def_static("from_ini",
-                    [](const std::string &path) {
+                    [](const nd_path &fpath) {
+                const std::string path = fpath.string();
                         std::vector<uint8_t> b = nd_read_file(path, NEAT_INI_MAX_FILE);
                         return nd_from_ini_text(std::string(b.begin(), b.end()), path);
                     },

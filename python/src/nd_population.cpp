@@ -231,8 +231,9 @@ void nd_bind_population(nb::module_ &m)
                               "A NEAT population (libneat). Evolve it with run(fitness, generations), or step by\n"
                               "step: give every genome a fitness (set_fitness, set_fitnesses), then epoch(). The run\n"
                               "is a pure function of (params, seed, fitness values): the same on every machine.")
-        .def("__init__", [](nd_population *self, const nd_params &params, uint64_t seed, const nd_genome *start,
+        .def("__init__", [](nd_population *self, const nd_params &params, nb::int_ seed_arg, const nd_genome *start,
                             bool keep_weights) {
+                uint64_t seed = nd_u64(seed_arg, "seed");
                 new (self) nd_population();
                 neat_start st;
                 st.genome = start != nullptr ? &start->gen() : nullptr;
@@ -305,10 +306,9 @@ void nd_bind_population(nb::module_ &m)
             }, "The next generation (every genome needs its fitness: FitnessError names the first without).")
         .def("networks", &nd_networks_of, nb::rv_policy::take_ownership,
              "Every genome's network of this generation, for batched evaluation in C.")
-        .def("run", [](nd_population &s, nb::callable fitness, uint32_t generations, nb::object until) {
+        .def("run", [](nd_population &s, nb::callable fitness, nb::int_ gens, nb::object until) {
                 neat_pop *pop = nd_pop_idle(s, "run");
-                if (generations == 0)
-                    throw nd_error(NEAT_E_ARG, "generations: at least 1");
+                uint32_t generations = nd_u32(gens, "generations", 1);
                 // while a generation is evaluated its genomes are borrowed: an epoch (or a nested run) would free them
                 struct running_flag {
                     bool &f;
@@ -363,8 +363,10 @@ void nd_bind_population(nb::module_ &m)
                         nd_fail(err, "epoch");
                     nd_record_best(rec, pop);
                     records.append(rec);
-                    if (!until.is_none() && nb::cast<bool>(until(rec)))
+                    if (!until.is_none() && nd_truth(until(rec)))
                         break;
+                    if (PyErr_CheckSignals() != 0) // Ctrl-C between generations: the population is whole
+                        throw nb::python_error();
                 }
                 return records;
             }, nb::arg("fitness"), nb::arg("generations"), nb::arg("until") = nb::none(),
@@ -414,7 +416,8 @@ void nd_bind_population(nb::module_ &m)
         .def_prop_ro("innovations", [](const nd_population &s) { return neat_pop_innovations(nd_pop(s)); },
                      "Innovation numbers used so far.")
         .def("to_bytes", &nd_pop_bytes, "The whole state as a libneat checkpoint (docs/formats.md).")
-        .def("save", [](const nd_population &s, const std::string &path) {
+        .def("save", [](const nd_population &s, const nd_path &fpath) {
+                const std::string path = fpath.string();
                 nb::bytes b = nd_pop_bytes(s);
                 nd_write_file(path, (const uint8_t *)b.c_str(), b.size());
             }, nb::arg("path"),
@@ -424,7 +427,8 @@ void nd_bind_population(nb::module_ &m)
                 return nd_pop_from_bytes((const uint8_t *)data.c_str(), data.size(), name);
             }, nb::arg("data"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
             "A checkpoint's bytes, checked (magic, version, sizes, checksum) before any is trusted.")
-        .def_static("load", [](const std::string &path) {
+        .def_static("load", [](const nd_path &fpath) {
+                const std::string path = fpath.string();
                 std::vector<uint8_t> b = nd_read_file(path, ND_CKPT_MAX);
                 return nd_pop_from_bytes(b.data(), b.size(), path);
             }, nb::arg("path"), nb::rv_policy::take_ownership,

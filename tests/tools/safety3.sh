@@ -162,6 +162,42 @@ b"
   expect_bad "fx/checkpoint.bin: the checkpoint of a run against fixed opponents" compare "$tmp/src" --against "$tmp/fx"
   expect_bad "fx/checkpoint.bin: the checkpoint of a run against fixed opponents" ladder "$tmp/fx" --top
   ;;
+scripts)
+  # §5: the study scripts take their output directory's lock, never count a cut row as a finished run, and never
+  # remove a run directory; study_summary.py refuses duplicate and cut rows with a message
+  root=$(cd "$(dirname "$0")/../.." && pwd)
+  export DUEL_EVOLVE=$duel
+  mkdir "$tmp/st"
+  exec 8> "$tmp/st/.study_m1.lock"
+  flock -n 8
+  rc=0
+  msg=$("$root/scripts/study_m1.sh" "$tmp/st" v1 2>&1 >/dev/null) || rc=$?
+  [ $rc -eq 2 ] && printf '%s\n' "$msg" | grep -q "st is in use by another study_m1.sh" || fail "a second study_m1.sh: $rc $msg"
+  exec 8>&-
+  header="cell,opponent,seed,wins,losses,draws,timeouts,margin,champion_hidden,champion_connections,run_seconds"
+  printf '%s\nv1,forager-hunter,1,100,150' "$header" > "$tmp/st/m1.csv"
+  mkdir -p "$tmp/st/v1/forager-hunter-1"
+  printf 'mine\n' > "$tmp/st/v1/forager-hunter-1/notes.txt"
+  rc=0
+  msg=$("$root/scripts/study_m1.sh" "$tmp/st" v1 2>&1 >/dev/null) || rc=$?
+  [ $rc -eq 2 ] && printf '%s\n' "$msg" | grep -q "the row of v1 forager-hunter seed 1 is cut short" ||
+    fail "a cut row counted as a finished run: $rc $msg"
+  [ -f "$tmp/st/v1/forager-hunter-1/notes.txt" ] || fail "study_m1.sh removed a directory"
+  # study_summary.py: cut, short, duplicate rows
+  printf '%s\nv1,forager,1,1,2,0,285,-1,0,36,5.0\nv1,forager,1,1,2,0,285,-1,0,36,5.0\n' "$header" > "$tmp/dup.csv"
+  printf '%s\nv1,forager,1,1,2,0,285,-1,0,36,5.0\nv1,forager,2,1,2\n' "$header" > "$tmp/short.csv"
+  printf '%s\nv1,forager,1,1,2,0,285,-1,0,36,5.0' "$header" > "$tmp/cut.csv"
+  for f in dup:"dup.csv:3: cell v1, opponent forager, seed 1 a second time (first on line 2)" \
+           short:"short.csv:3: 5 fields, expected 11: a cut or edited row" \
+           cut:"cut.csv: the last line is cut short (no newline)"; do
+    rc=0
+    msg=$(python3 "$root/scripts/study_summary.py" "$tmp/${f%%:*}.csv" 2>&1) || rc=$?
+    [ $rc -ne 0 ] && ! printf '%s\n' "$msg" | grep -q Traceback && printf '%s\n' "$msg" | grep -qF "${f#*:}" ||
+      fail "study_summary.py ${f%%:*}: $rc $msg"
+  done
+  printf '%s\nv1,forager,1,1,2,0,285,-1,0,36,5.0\r\n' "$header" > "$tmp/ok.csv"
+  python3 "$root/scripts/study_summary.py" "$tmp/ok.csv" | grep -q "| v1 | forager | -1 |" || fail "a good table"
+  ;;
 *)
   fail "unknown check $what"
   ;;
