@@ -180,7 +180,7 @@ foreach(check rundir lock bounds records outputs paths edits counters small)
 endforeach()
 
 # issue 49: data safety, third pass (tests/tools/safety3.sh)
-foreach(check runfiles dirs world plan scripts)
+foreach(check runfiles dirs world plan scripts messages)
   add_test(NAME tools/safety3_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety3.sh $<TARGET_FILE:duel_evolve>
                    ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check})
@@ -251,7 +251,7 @@ endforeach()
 # another build, DUEL_MPI_SALT)
 find_program(MPIRUN mpirun)
 if(MPI_C_FOUND AND MPIRUN)
-  add_executable(mpi_skew tools/mpi_skew.c ${DUEL_MPI_SOURCES} ${PROJECT_SOURCE_DIR}/tools/common/duel_games.c
+  add_executable(mpi_skew tools/mpi_skew.c ${DUEL_MPI_SOURCES} ${PROJECT_SOURCE_DIR}/tools/common/duel_games.c ${PROJECT_SOURCE_DIR}/tools/common/duel_text.c
                  ${PROJECT_SOURCE_DIR}/tools/common/duel_child.c)
   target_include_directories(mpi_skew PRIVATE ${PROJECT_SOURCE_DIR}/tools/mpi ${PROJECT_SOURCE_DIR}/tools/common)
   target_compile_options(mpi_skew PRIVATE ${NEAT_WARNINGS})

@@ -143,7 +143,8 @@ records)
   head -3 "$tmp/ref/generations.csv" > "$tmp/g/generations.csv"
   expect_bad "g/generations.csv holds 1 generation but the checkpoint 5: rows lost cannot be rebuilt" \
     resume "$tmp/g" --generations 6
-  head -c -1 "$tmp/ref/generations.csv" > "$tmp/g/generations.csv" # generation 4's B row torn: lost
+  head -c -2 "$tmp/ref/generations.csv" > "$tmp/g/generations.csv" # generation 4's B row torn: lost (a row missing
+  # only its newline is whole and repaired since issue 49: tools/safety3_messages)
   cp "$tmp/g/generations.csv" "$tmp/cut.csv"
   expect_bad "g/generations.csv holds 4 generations but the checkpoint 5: rows lost cannot be rebuilt" \
     resume "$tmp/g" --generations 6
@@ -207,7 +208,7 @@ outputs)
     fail "a CRLF cache was not read"
   { cat "$tmp/cache.csv"; tail -1 "$tmp/cache.csv" | awk -F, -v OFS=, '{ $4 = $4 + 1; $5 = $5 - 1; print }'; } > "$tmp/dup.csv"
   expect_bad "dup.csv:[0-9]*: a second, different result for the comparison of" compare "$tmp/a" --against "$tmp/b" --cache "$tmp/dup.csv"
-  head -c -1 "$tmp/cache.csv" > "$tmp/cut.csv"
+  head -c -3 "$tmp/cache.csv" > "$tmp/cut.csv" # (a last line missing only its newline is whole: taken, issue 49)
   expect_bad "cut.csv:[0-9]*: the last line is cut short" compare "$tmp/a" --against "$tmp/b" --cache "$tmp/cut.csv"
   # the per-run cache, and ladder's outputs
   cp "$tmp/mine.txt" "$tmp/b/compare-cache.csv"

@@ -198,6 +198,45 @@ scripts)
   printf '%s\nv1,forager,1,1,2,0,285,-1,0,36,5.0\r\n' "$header" > "$tmp/ok.csv"
   python3 "$root/scripts/study_summary.py" "$tmp/ok.csv" | grep -q "| v1 | forager | -1 |" || fail "a good table"
   ;;
+messages)
+  # §6: a missing final newline is repaired, not answered with "replay the whole run" or "delete the cache";
+  # duplicated and CRLF rows are named as such; DUEL_MPI_WAIT refuses what it cannot parse
+  "$duel" run --config "$cfg" --out "$tmp/r" --generations 3 --quiet
+  cp -r "$tmp/r" "$tmp/full"
+  "$duel" resume "$tmp/full" --generations 4 --quiet
+  truncate -s -1 "$tmp/r/generations.csv"
+  "$duel" resume "$tmp/r" --generations 4 --quiet || fail "resume refused generations.csv missing its last newline"
+  cmp -s "$tmp/r/checkpoint.bin" "$tmp/full/checkpoint.bin" || fail "the repaired run differs"
+  [ "$(cut -d, -f1-16 "$tmp/r/generations.csv")" = "$(cut -d, -f1-16 "$tmp/full/generations.csv")" ] ||
+    fail "the repaired generations.csv differs"
+  grep -q "generations.csv's last row lacked its newline (the row is whole): added" "$tmp/r/log.txt" || fail "not logged"
+  cp -r "$tmp/full" "$tmp/dup"
+  sed -i '3p' "$tmp/dup/generations.csv"
+  expect_bad "dup/generations.csv:4: the row before again (a duplicated row): delete one of the two$" resume "$tmp/dup" --generations 5
+  cp -r "$tmp/full" "$tmp/crlf"
+  sed -i 's/$/\r/' "$tmp/crlf/generations.csv"
+  expect_bad "crlf/generations.csv:1: a CRLF line end (a copy converted by a tool that writes Windows line ends): convert it back (dos2unix), the data is the same$" \
+    resume "$tmp/crlf" --generations 5
+  sed -i '3p' "$tmp/dup/dominance.csv"
+  expect_bad "dup/dominance.csv:4: the row before again (a duplicated row)" ladder "$tmp/dup" --top
+  # the compare cache: a last entry without its newline is whole, taken, and written back whole
+  "$duel" run --config "$cfg" --out "$tmp/s" --generations 3 --seed 2 --quiet
+  "$duel" compare "$tmp/full" --against "$tmp/s" --cache "$tmp/cache.csv" > /dev/null
+  truncate -s -1 "$tmp/cache.csv"
+  "$duel" compare "$tmp/full" --against "$tmp/s" --cache "$tmp/cache.csv" > "$tmp/out" ||
+    fail "compare refused a cache missing its last newline"
+  grep -q "(0 played, [1-9][0-9]* from the cache)" "$tmp/out" || fail "the cache was not used: $(cat "$tmp/out")"
+  [ "$(tail -c 1 "$tmp/cache.csv" | od -An -c | tr -d ' ')" = '\n' ] || fail "the cache was not written back whole"
+  if command -v mpirun > /dev/null; then
+    for v in abc 0x10 inf 0 -5 1e7; do
+      rc=0
+      DUEL_MPI_WAIT=$v mpirun --oversubscribe --allow-run-as-root -np 2 "$duel" run --config "$cfg" --out "$tmp/mpi" \
+        --generations 1 --quiet > "$tmp/mout" 2>&1 || rc=$?
+      [ $rc -ne 0 ] && grep -q "DUEL_MPI_WAIT='$v': expected seconds" "$tmp/mout" || fail "DUEL_MPI_WAIT=$v: $rc $(cat "$tmp/mout")"
+      [ ! -e "$tmp/mpi/checkpoint.bin" ] || fail "DUEL_MPI_WAIT=$v: a run was played"
+    done
+  fi
+  ;;
 *)
   fail "unknown check $what"
   ;;

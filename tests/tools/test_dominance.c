@@ -97,6 +97,9 @@ static void test_refused(void **state)
     td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n2,5,B,0,39,\n", "d.csv:3: level 2 needs 1 w:l scores");
     td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n2,5,B,0,39,3:1 4:4\n", "d.csv:3: level 2 needs 1");
     td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n3,5,B,0,39,3:1 4:4\n", "d.csv:3: level 3 of generation 5 out of order");
+    /* named for what they are (issue 49): a duplicated row, a CRLF copy */
+    td_bad(DUEL_DOMINANCE_HEADER "1,0,A,0,39,\n2,5,B,0,39,3:1\n2,5,B,0,39,3:1\n", "d.csv:4: the row before again (a duplicated row)");
+    td_bad("level,generation,population,hidden,connections,wins\r\n1,0,A,0,39,\r\n", "d.csv:1: a CRLF line end");
     td_bad(DUEL_DOMINANCE_HEADER "1,4,A,0,39,\n2,4,B,0,39,3:1\n", "d.csv:3: level 2 of generation 4 out of order");
     td_bad(DUEL_DOMINANCE_HEADER "1,99999999999,A,0,39,\n", "d.csv:2: not a dominance row");
     td_bad(DUEL_DOMINANCE_HEADER "1,-1,A,0,39,\n", "d.csv:2: not a dominance row");
@@ -167,6 +170,14 @@ static void test_generations(void **state)
     assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), -1);
     assert_string_equal(err, "g.csv:2: field 12 is not a number");
     assert_null(rows);
+    /* named for what they are (issue 49), with their own code: a duplicated row, a CRLF copy */
+    text = DUEL_GENERATIONS_HEADER "0,A,2,0.7,1,3.0,0.0,39.0,0,39,0,0,39,39,1536,1,1.1\n"
+                                   "0,A,2,0.7,1,3.0,0.0,39.0,0,39,0,0,39,39,1536,1,1.1\n";
+    assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), -3);
+    assert_string_equal(err, "g.csv:3: the row before again (a duplicated row): delete one of the two");
+    text = "generation,population\r\n0,A\r\n";
+    assert_int_equal(duel_generations_parse("g.csv", text, strlen(text), &rows, &n, err, sizeof err), -3);
+    assert_non_null(strstr(err, "g.csv:1: a CRLF line end"));
 }
 
 int main(void)

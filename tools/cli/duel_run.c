@@ -1,6 +1,7 @@
 /* duel_run.c - duel_evolve run, resume and config: a coevolution run, or a run against fixed opponents, in a run directory, checkpointed every generation. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
+#include <ctype.h>
 #include <errno.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -1443,6 +1444,38 @@ static int duel_rebuild_dominance(duel_run *R)
  * checkpoint were cut already): rows measured as they happened cannot be
  * rebuilt from the checkpoint, so a run missing some is refused with what
  * works. 0, or the exit status after one line. */
+/* generations.csv's last row without its newline (text, len bytes: len > 0 and text[len - 1] != '\n'): when it
+ * is a whole row of a generation the checkpoint holds (before g), the one byte is added to the file (the data is
+ * whole) and logged; a row of a generation after the checkpoint is left to be cut, as a torn one. 0 when repaired,
+ * else -1. */
+static int duel_repair_last_newline(duel_run *R, const char *path, const uint8_t *text, size_t len, uint32_t g)
+{
+    duel_gen_row *rows;
+    size_t n;
+    char err[700], *copy = (char *)malloc(len + 1);
+    int r;
+    /* a whole row ends in its wall time written "%.3f": a row cut inside that field is torn, not whole */
+    if (len < 5 || text[len - 4] != '.' || !isdigit((unsigned char)text[len - 3]) || !isdigit((unsigned char)text[len - 2]) ||
+        !isdigit((unsigned char)text[len - 1]) || !isdigit((unsigned char)text[len - 5])) {
+        free(copy);
+        return -1;
+    }
+    if (copy == NULL)
+        return -1;
+    memcpy(copy, text, len);
+    copy[len] = '\n';
+    r = duel_generations_parse(path, copy, len + 1, &rows, &n, err, sizeof err);
+    free(copy);
+    if (r != 0)
+        return -1;
+    r = n > 0 && rows[n - 1].generation < g ? 0 : -1;
+    free(rows);
+    if (r != 0 || duel_file_append(path, "\n") != 0)
+        return -1;
+    duel_log(R, "resume: generations.csv's last row lacked its newline (the row is whole): added");
+    return 0;
+}
+
 static int duel_check_generations(duel_run *R, uint32_t g)
 {
     duel_gen_row *rows;
@@ -1464,8 +1497,21 @@ static int duel_check_generations(duel_run *R, uint32_t g)
     /* the complete rows: a torn last one belongs to the generation after the checkpoint, or is lost (below) */
     for (keep = len; keep > 0 && text[keep - 1] != '\n'; keep--)
         ;
+    if (keep < len && duel_repair_last_newline(R, path, text, len, g) == 0) {
+        /* the row was whole, only its newline missing: added; the file read again as it now is */
+        free(text);
+        if (duel_file_read(path, DUEL_GENERATIONS_MAX_FILE, &text, &len) != 0) {
+            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, duel_file_strerror(errno));
+            return 2;
+        }
+        keep = len;
+    }
     r = duel_generations_parse(path, (const char *)text, keep, &rows, &n, err, sizeof err);
     free(text);
+    if (r == -3) { /* a CRLF copy or a duplicated row: the rows are there, the fix is named */
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
     if (r != 0) {
         fprintf(stderr, "duel_evolve: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", err);
         return 2;

@@ -162,7 +162,7 @@ int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, 
                          size_t err_len)
 {
     size_t at, line = 1, hlen = 0;
-    int v1;
+    int v1, unterminated = 0;
 
     memset(c, 0, sizeof *c);
     snprintf(c->path, sizeof c->path, "%s", path);
@@ -185,13 +185,9 @@ int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, 
         const duel_tally *have;
         while (end < len && text[end] != '\n')
             end++;
-        if (end == len) {
-            /* the cache is replaced whole, never appended: a cut line is damage, not a writer that died */
-            snprintf(err, err_len, "%s:%zu: the last line is cut short (no newline): delete the file to rebuild it "
-                                   "(its games are played again)", path, line + 1);
-            duel_cmp_cache_free(c);
-            return -1;
-        }
+        /* the cache is replaced whole, never appended: a last line without its newline is a whole entry that lost
+         * one byte (taken, and written back whole at the next save) or damage (refused below) */
+        unterminated = end == len;
         stop = end > at && text[end - 1] == '\r' ? end - 1 : end; /* a CRLF copy reads the same */
         if (stop - at >= sizeof row || stop - at < key)
             goto bad;
@@ -229,10 +225,16 @@ int duel_cmp_cache_parse(duel_cmp_cache *c, const char *path, const char *text, 
         }
         at = end + 1;
     }
-    /* a format-1 file is written back in format 2 when it next saves */
-    c->dirty = v1;
+    /* a format-1 file is written back in format 2 when it next saves, and one missing its last newline whole */
+    c->dirty = v1 || unterminated;
     return 0;
 bad:
+    if (unterminated) {
+        snprintf(err, err_len, "%s:%zu: the last line is cut short (no newline, and not a whole entry): delete the "
+                               "file to rebuild it (its games are played again)", path, line + 1);
+        duel_cmp_cache_free(c);
+        return -1;
+    }
     snprintf(err, err_len, "%s:%zu: not a cache entry (%sa_hash,b_hash,wins_a,wins_b,draws,timeouts summing to %d): "
                            "delete the file to rebuild it", path, line + 1, v1 ? "" : "world,", 2 * DUEL_CONFIGS);
     duel_cmp_cache_free(c);

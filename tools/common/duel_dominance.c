@@ -66,11 +66,22 @@ int duel_dominance_parse_scores(const char *name, const char *text, size_t len, 
     duel_dominance_row *out = NULL;
     duel_dominance_score *sc = NULL;
     uint32_t count = 0, cap = 0, line = 1, n_sc = 0, sc_cap = 0;
-    const char *nl = (const char *)memchr(p, '\n', len);
+    const char *nl = (const char *)memchr(p, '\n', len), *odd;
     *rows = NULL;
     *n = 0;
     if (scores != NULL)
         *scores = NULL;
+    if ((line = duel_csv_odd_line(text, len, &odd)) != 0) {
+        if (odd[0] == 'c')
+            snprintf(err, err_len, "%s:%u: a CRLF line end (a copy converted by a tool that writes Windows line "
+                                   "ends): resuming the run rebuilds the file from its checkpoint (duel_evolve resume "
+                                   "RUN), or convert it back (dos2unix)", name, line);
+        else
+            snprintf(err, err_len, "%s:%u: the row before again (a duplicated row): resuming the run rebuilds the "
+                                   "file from its checkpoint (duel_evolve resume RUN)", name, line);
+        return -1;
+    }
+    line = 1;
     if (nl == NULL || (size_t)(nl - p) + 1 != strlen(DUEL_DOMINANCE_HEADER) ||
         memcmp(p, DUEL_DOMINANCE_HEADER, (size_t)(nl - p)) != 0) {
         snprintf(err, err_len, "%s:1: not a dominance.csv (expected the header %.*s)", name,

@@ -480,3 +480,26 @@ void duel_dir_unlock(duel_lock *lk)
         close(lk->dir_fd);
     lk->dir_fd = lk->file_fd = -1;
 }
+
+uint32_t duel_csv_odd_line(const char *text, size_t len, const char **what)
+{
+    const char *p = text, *end = text + len, *prev = NULL, *nl;
+    size_t prev_len = 0;
+    uint32_t line = 0;
+    while (p < end && (nl = (const char *)memchr(p, '\n', (size_t)(end - p))) != NULL) {
+        size_t n = (size_t)(nl - p);
+        line++;
+        if (n > 0 && p[n - 1] == '\r') {
+            *what = "crlf";
+            return line;
+        }
+        if (prev != NULL && line > 2 && n == prev_len && n > 0 && memcmp(p, prev, n) == 0) {
+            *what = "dup";
+            return line;
+        }
+        prev = p;
+        prev_len = n;
+        p = nl + 1;
+    }
+    return 0;
+}

@@ -80,6 +80,12 @@ int duel_file_append(const char *path, const char *text);
  * A missing file is fine. 0 or -1. */
 int duel_csv_keep_before(const char *path, uint32_t generation);
 
+/* What a record's reader names before anything else, rather than reporting it as a lost or malformed row: the
+ * first line (1-based) of text that ends in CRLF (*what "crlf": a copy converted by a tool that writes Windows
+ * line ends), or the first row that repeats the one before it byte for byte (*what "dup": a row written twice).
+ * 0 when there is neither. */
+uint32_t duel_csv_odd_line(const char *text, size_t len, const char **what);
+
 /* The text write(f, ctx) prints, put in place by duel_file_replace. Returns
  * 0, 2 (cannot create: a bad path) or 1 (the write failed), with one line on
  * stderr. */

@@ -40,8 +40,19 @@ int duel_generations_parse(const char *name, const char *text, size_t len, duel_
     size_t hl = strlen(DUEL_GENERATIONS_HEADER), count = 0, cap = 0;
     duel_gen_row *out = NULL;
     uint32_t line = 1;
+    const char *odd;
     *rows = NULL;
     *n = 0;
+    if ((line = duel_csv_odd_line(text, len, &odd)) != 0) {
+        if (odd[0] == 'c')
+            snprintf(err, err_len, "%s:%u: a CRLF line end (a copy converted by a tool that writes Windows line "
+                                   "ends): convert it back (dos2unix), the data is the same", name, line);
+        else
+            snprintf(err, err_len, "%s:%u: the row before again (a duplicated row): delete one of the two", name,
+                     line);
+        return -3;
+    }
+    line = 1;
     if (len < hl || memcmp(text, DUEL_GENERATIONS_HEADER, hl) != 0) {
         snprintf(err, err_len, "%s:1: not a generations.csv (expected its header)", name);
         return -1;

@@ -27,7 +27,8 @@ typedef struct duel_gen_row {
 
 /* Parses the text of a generations.csv (name for messages): the header, then rows of 17 fields with a generation
  * and a population A or B; a torn last row (no newline) is not a row. *rows (malloc'd, the caller frees it; NULL
- * when there is none) and *n. 0, or -1 with "NAME:LINE: problem" in err. */
+ * when there is none) and *n. 0, or -1 with "NAME:LINE: problem" in err; -3 for a CRLF copy or a duplicated row
+ * (duel_csv_odd_line: the rows are there, the message names the fix). */
 int duel_generations_parse(const char *name, const char *text, size_t len, duel_gen_row **rows, size_t *n, char *err,
                            size_t err_len);
 

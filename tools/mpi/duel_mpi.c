@@ -10,6 +10,7 @@
 #include "duel.h"
 #include "duel_cores.h"
 #include "duel_mpi_internal.h"
+#include "duel_text.h"
 #include "neat.h"
 #include "neat_coev.h"
 #include "nrt.h"
@@ -125,6 +126,16 @@ int duel_mpi_start(int argc, char **argv)
     int provided = 0, local = 1, r, bad = -1;
     if (!duel_mpi_launched())
         return 0;
+    {
+        /* every rank reads the same environment (mpirun -x): each refuses it alike, before MPI starts */
+        double w;
+        if (duel_mpi_wait_parse(&w) != 0) {
+            char esc[300];
+            fprintf(stderr, "duel_evolve: mpi: DUEL_MPI_WAIT='%s': expected seconds, a number above 0 and at most "
+                            "1000000 (60 when unset)\n", duel_text_escape(getenv("DUEL_MPI_WAIT"), esc, sizeof esc));
+            return 2;
+        }
+    }
     if (MPI_Init_thread(NULL, NULL, MPI_THREAD_MULTIPLE, &provided) != MPI_SUCCESS) {
         fprintf(stderr, "duel_evolve: mpi: MPI_Init failed\n");
         return 1;

@@ -7,6 +7,7 @@
 #include <time.h>
 
 #include "duel_mpi_internal.h"
+#include "neat_config.h"
 
 /*
  * A wait with work in flight has a deadline derived from that work (rank 0
@@ -42,15 +43,27 @@ static double duel_alive_now(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
+int duel_mpi_wait_parse(double *out)
+{
+    const char *v = getenv("DUEL_MPI_WAIT");
+    char *end;
+    double b;
+    *out = 60.0;
+    if (v == NULL)
+        return 0;
+    /* the number syntax of every setting (neat_config_number_len): no hex, inf or nan */
+    b = neat_config_number_len(v, 0) == strlen(v) && v[0] != '\0' ? strtod(v, &end) : -1.0;
+    if (!(b > 0.0 && b <= 1e6))
+        return -1;
+    *out = b;
+    return 0;
+}
+
 double duel_mpi_wait_base(void)
 {
     static double base = -1.0;
-    if (base < 0.0) {
-        const char *v = getenv("DUEL_MPI_WAIT");
-        char *end;
-        double b = v != NULL ? strtod(v, &end) : 0.0;
-        base = v != NULL && end != v && *end == '\0' && b > 0.0 && b <= 1e6 ? b : 60.0;
-    }
+    if (base < 0.0 && duel_mpi_wait_parse(&base) != 0)
+        base = 60.0; /* not reached: duel_mpi_start refuses it */
     return base;
 }
 

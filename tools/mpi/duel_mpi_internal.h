@@ -65,6 +65,8 @@ int duel_mpi_games_serve(MPI_Comm comm, int leader, uint32_t threads, int *end_s
 
 /* Signs of life (duel_mpi_alive.c). The deadline's base: 60 s, or DUEL_MPI_WAIT seconds from the environment. */
 double duel_mpi_wait_base(void);
+/* DUEL_MPI_WAIT read: 0 with *out its seconds (60 when unset), or -1 when it is set but not seconds in (0, 1e6]. */
+int duel_mpi_wait_parse(double *out);
 /* Starts the thread that sends signs of life (when provided is MPI_THREAD_MULTIPLE). 0, or -1. */
 int duel_mpi_alive_start(int provided);
 /* Sends signs of life to world_rank too (a rank of this one's experiment group). */
