@@ -1455,8 +1455,9 @@ static int duel_repair_last_newline(duel_run *R, const char *path, const uint8_t
     char err[700], *copy = (char *)malloc(len + 1);
     int r;
     /* a whole row ends in its wall time written "%.3f": a row cut inside that field is torn, not whole */
-    if (len < 5 || text[len - 4] != '.' || !isdigit((unsigned char)text[len - 3]) || !isdigit((unsigned char)text[len - 2]) ||
-        !isdigit((unsigned char)text[len - 1]) || !isdigit((unsigned char)text[len - 5])) {
+    if (len < 5 || text[len - 4] != '.' || !isdigit((unsigned char)text[len - 5]) ||
+        !isdigit((unsigned char)text[len - 3]) || !isdigit((unsigned char)text[len - 2]) ||
+        !isdigit((unsigned char)text[len - 1])) {
         free(copy);
         return -1;
     }
