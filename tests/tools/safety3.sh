@@ -238,6 +238,44 @@ messages)
     done
   fi
   ;;
+edits)
+  # §3: one policy for edits. config.ini carries the run's seal: a hand edit of any key is refused (generations and
+  # strength_every, which the checkpoint does not hold, included); an override that no generation played never
+  # leaves config.ini and the checkpoint disagreeing
+  "$duel" run --config "$cfg" --out "$tmp/ref" --generations 3 --quiet
+  sed -n 2p "$tmp/ref/config.ini" | grep -q "^; checksum [0-9a-f]\{16\}: written by the run" || fail "no seal"
+  for edit in 's/^generations = 3/generations = 5/' 's/^strength_every = .*/strength_every = 1/' 's/^threads = .*/threads = 3/'; do
+    rm -rf "$tmp/h"
+    cp -r "$tmp/ref" "$tmp/h"
+    sed -i "$edit" "$tmp/h/config.ini"
+    cmp -s "$tmp/h/config.ini" "$tmp/ref/config.ini" && continue # (a key this configuration does not write)
+    expect_bad "h/config.ini was edited by hand since the run wrote it" resume "$tmp/h" --generations 6
+    cmp -s "$tmp/h/checkpoint.bin" "$tmp/ref/checkpoint.bin" || fail "a refused resume played ($edit)"
+  done
+  # an override on a finished run applies to no generation: refused, config.ini untouched
+  cp -r "$tmp/ref" "$tmp/f"
+  expect_bad "the run has played its 3 generations: an override (--set) applies to generations to come" \
+    resume "$tmp/f" --set add_node_prob=0.05
+  cmp -s "$tmp/f/config.ini" "$tmp/ref/config.ini" || fail "a refused override reached config.ini"
+  # a resume with an override killed before its first checkpoint: config.ini (the run's) says the override, the
+  # checkpoint does not; the checkpoint is the run: the same bytes as a resume without it, and logged
+  cp -r "$tmp/ref" "$tmp/k"
+  "$duel" resume "$tmp/k" --set add_node_prob=0.05 --generations 4 --quiet
+  for f in checkpoint.bin generations.csv dominance.csv; do cp "$tmp/ref/$f" "$tmp/k/$f"; done
+  rm -f "$tmp/k/champions/gen-00003."*
+  "$duel" resume "$tmp/k" --quiet || fail "a resume after an override that was never saved"
+  grep -q "resume: config.ini said 'add_node_prob = 0.05', the checkpoint 'add_node_prob = 0.01'" "$tmp/k/log.txt" ||
+    fail "not logged: $(tail -3 "$tmp/k/log.txt")"
+  cp -r "$tmp/ref" "$tmp/plain"
+  "$duel" resume "$tmp/plain" --generations 4 --quiet
+  cmp -s "$tmp/k/checkpoint.bin" "$tmp/plain/checkpoint.bin" || fail "the checkpoint's parameters were not the run's"
+  grep -q "^add_node_prob = 0.01$" "$tmp/k/config.ini" || fail "config.ini not written again from the checkpoint"
+  # a run directory from before the seal resumes as before
+  cp -r "$tmp/ref" "$tmp/old"
+  sed -i 2d "$tmp/old/config.ini"
+  "$duel" resume "$tmp/old" --generations 4 --quiet || fail "a config.ini without a seal"
+  cmp -s "$tmp/old/checkpoint.bin" "$tmp/plain/checkpoint.bin" || fail "an unsealed run went on differently"
+  ;;
 *)
   fail "unknown check $what"
   ;;

@@ -91,17 +91,38 @@ static void duel_log(duel_run *R, const char *fmt, ...)
     }
 }
 
+/* config.ini's seal: its second line holds the FNV-1a hash of every line after it, so that resume tells the
+ * run's own writing from a hand edit of any key ([run]'s generations and strength_every, which the checkpoint does
+ * not hold, included). */
+#define DUEL_SEAL "; checksum "
+#define DUEL_SEAL_TAIL ": written by the run (a hand edit is refused by resume; give a change as resume --set KEY=VALUE)\n"
+
 static int duel_write_config(const duel_run *R)
 {
-    char path[4200], *text = NULL;
-    size_t len = 0;
-    FILE *mem = open_memstream(&text, &len);
+    char path[4200], *text = NULL, *body = NULL;
+    size_t len = 0, blen = 0;
+    FILE *mem = open_memstream(&body, &blen);
     int r;
     if (mem == NULL)
         return -1;
-    fprintf(mem, "; the effective configuration of this run (duel_evolve config --dump format)\n");
     duel_config_dump(mem, &R->cfg);
-    fclose(mem);
+    if (fclose(mem) != 0) {
+        free(body);
+        return -1;
+    }
+    mem = open_memstream(&text, &len);
+    if (mem == NULL) {
+        free(body);
+        return -1;
+    }
+    fprintf(mem, "; the effective configuration of this run (duel_evolve config --dump format)\n");
+    fprintf(mem, DUEL_SEAL "%016llx" DUEL_SEAL_TAIL, (unsigned long long)duel_blob_hash((const uint8_t *)body, blen));
+    fwrite(body, 1, blen, mem);
+    free(body);
+    if (fclose(mem) != 0) {
+        free(text);
+        return -1;
+    }
     duel_path(path, sizeof path, R->dir, "config.ini");
     r = duel_file_replace(path, text, len);
     if (r != 0)
@@ -1444,6 +1465,34 @@ static int duel_rebuild_dominance(duel_run *R)
  * checkpoint were cut already): rows measured as they happened cannot be
  * rebuilt from the checkpoint, so a run missing some is refused with what
  * works. 0, or the exit status after one line. */
+/* Whether dir/config.ini is as the run wrote it: 1 (its seal holds), 0 (no seal: a run from before it, whose
+ * [run] keys cannot be checked), -1 (edited since: the seal does not hold, or the file cannot be read). */
+static int duel_config_sealed(const char *dir)
+{
+    char path[4200];
+    uint8_t *text;
+    size_t len, a, b;
+    unsigned long long want;
+    int r;
+    duel_path(path, sizeof path, dir, "config.ini");
+    if (duel_file_read(path, 1u << 20, &text, &len) != 0)
+        return -1;
+    for (a = 0; a < len && text[a] != '\n'; a++)
+        ;
+    a++; /* the second line */
+    if (a + strlen(DUEL_SEAL) + 16 > len || memcmp(text + a, DUEL_SEAL, strlen(DUEL_SEAL)) != 0) {
+        free(text);
+        return 0;
+    }
+    for (b = a; b < len && text[b] != '\n'; b++)
+        ;
+    r = -1;
+    if (b < len && sscanf((const char *)text + a + strlen(DUEL_SEAL), "%16llx", &want) == 1)
+        r = duel_blob_hash(text + b + 1, len - b - 1) == (uint64_t)want ? 1 : -1;
+    free(text);
+    return r;
+}
+
 /* generations.csv's last row without its newline (text, len bytes: len > 0 and text[len - 1] != '\n'): when it
  * is a whole row of a generation the checkpoint holds (before g), the one byte is added to the file (the data is
  * whole) and logged; a row of a generation after the checkpoint is left to be cut, as a torn one. 0 when repaired,
@@ -1533,7 +1582,7 @@ static int duel_check_generations(duel_run *R, uint32_t g)
  * --set, which is applied and logged. 0, or 2 after one line naming the
  * first key that differs. */
 static int duel_check_edits(const duel_config *config_ini, const neat_params *np, const neat_coev_params *cp,
-                            const char *dir, char **sets, uint32_t n_sets)
+                            const char *dir, char **sets, uint32_t n_sets, char *differs, size_t differs_cap)
 {
     duel_config file = *config_ini, ck = *config_ini;
     char *a = NULL, *b = NULL, err[600], la[300], lb[300];
@@ -1565,23 +1614,52 @@ static int duel_check_edits(const duel_config *config_ini, const neat_params *np
         fprintf(stderr, "duel_evolve: resume: out of memory\n");
         r = 1;
     } else if (duel_plan_diff(a, b, la, lb, sizeof la) != 0) {
-        fprintf(stderr, "duel_evolve: %s/config.ini says '%s' but the run in its checkpoint has '%s': a hand edit of "
-                        "config.ini is not taken (give a change as --set KEY=VALUE, which is applied and logged, or "
-                        "restore config.ini)\n", dir, la, lb);
-        r = 2;
+        if (differs != NULL) {
+            /* config.ini as a run wrote it: an override of a resume that played no generation (or whose
+             * checkpoint was not saved); the caller takes the checkpoint's */
+            snprintf(differs, differs_cap, "config.ini said '%s', the checkpoint '%s'", la, lb);
+            r = 3;
+        } else {
+            fprintf(stderr, "duel_evolve: %s/config.ini says '%s' but the run in its checkpoint has '%s': a hand edit "
+                            "of config.ini is not taken (give a change as --set KEY=VALUE, which is applied and "
+                            "logged, or restore config.ini)\n", dir, la, lb);
+            r = 2;
+        }
     }
     free(a);
     free(b);
     return r;
 }
 
+/* config.ini as a run wrote it, but with parameters the checkpoint's run never played (a resume's --set whose
+ * generation was never saved): the checkpoint is the run; config.ini follows it (written again once this resume's
+ * own overrides are applied), and the log says so. 0, or 2 after one line. */
+static int duel_take_checkpoint(duel_run *R, duel_config *before, const neat_params *np, const neat_coev_params *cp,
+                                char **sets, uint32_t n_sets, const char *differs)
+{
+    char err[600];
+    before->neat = *np;
+    if (cp != NULL)
+        before->coev = *cp;
+    R->cfg.neat = *np;
+    if (cp != NULL)
+        R->cfg.coev = *cp;
+    if (duel_config_set_list(&R->cfg, (const char *const *)sets, n_sets, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: --set: %s\n", err); /* not reached: the same overrides were applied before */
+        return 2;
+    }
+    duel_log(R, "resume: %s, an override of a resume that played no generation: the run is the checkpoint's, and "
+                "config.ini is written again", differs);
+    return 0;
+}
+
 static int duel_resume_main(int argc, char **argv)
 {
     duel_run R;
     neat_pop *pop = NULL;
-    char err[600], path[4200], *sets[64];
+    char err[600], path[4200], *sets[64], differs[700] = "";
     uint32_t gens = 0, n_sets = 0, k, g;
-    int i, c, have_gens = 0, shorten = 0, e;
+    int i, c, have_gens = 0, shorten = 0, e, sealed;
     duel_config before;
 
     memset(&R, 0, sizeof R);
@@ -1676,6 +1754,9 @@ static int duel_resume_main(int argc, char **argv)
         return 2;
     }
 
+    /* a hand edit of any key is refused: the NEAT and coevolution keys are named below (against the checkpoint),
+     * the others ([run]'s generations, strength_every, ...) by the seal the run wrote */
+    sealed = duel_config_sealed(R.dir);
     duel_path(path, sizeof path, R.dir, "checkpoint.bin");
     c = R.cfg.opp.n > 0 ? duel_pop_ckpt_load(path, &pop) : duel_ckpt_load("", path, &R.coev);
     if (c < 0)
@@ -1700,7 +1781,11 @@ static int duel_resume_main(int argc, char **argv)
     } else if (R.cfg.opp.n > 0) {
         size_t tlen = 0;
         const uint8_t *tag = neat_pop_game(pop, &tlen);
-        if ((e = duel_check_edits(&before, neat_pop_params(pop), NULL, R.dir, sets, n_sets)) != 0) {
+        e = duel_check_edits(&before, neat_pop_params(pop), NULL, R.dir, sets, n_sets, sealed == 1 ? differs : NULL,
+                             sizeof differs);
+        if (e == 3)
+            e = duel_take_checkpoint(&R, &before, neat_pop_params(pop), NULL, sets, n_sets, differs);
+        if (e != 0) {
             neat_pop_free(pop);
             duel_run_free(&R);
             return e;
@@ -1730,8 +1815,12 @@ static int duel_resume_main(int argc, char **argv)
             duel_run_free(&R);
             return 2;
         }
-        if ((e = duel_check_edits(&before, neat_pop_params(neat_coev_pop(R.coev, 0)), neat_coev_get_params(R.coev),
-                                  R.dir, sets, n_sets)) != 0) {
+        e = duel_check_edits(&before, neat_pop_params(neat_coev_pop(R.coev, 0)), neat_coev_get_params(R.coev), R.dir,
+                             sets, n_sets, sealed == 1 ? differs : NULL, sizeof differs);
+        if (e == 3)
+            e = duel_take_checkpoint(&R, &before, neat_pop_params(neat_coev_pop(R.coev, 0)),
+                                     neat_coev_get_params(R.coev), sets, n_sets, differs);
+        if (e != 0) {
             duel_run_free(&R);
             return e;
         }
@@ -1746,6 +1835,15 @@ static int duel_resume_main(int argc, char **argv)
             duel_run_free(&R);
             return 2;
         }
+    }
+    if (sealed < 0 && c == 0) {
+        fprintf(stderr, "duel_evolve: %s/config.ini was edited by hand since the run wrote it (its checksum line no "
+                        "longer matches; the parameters the checkpoint holds are unchanged, so a [run] key such as "
+                        "generations or strength_every): a hand edit of config.ini is not taken (give a change as "
+                        "resume --generations N or --set KEY=VALUE, which is applied and logged, or restore "
+                        "config.ini)\n", R.dir);
+        duel_run_free(&R);
+        return 2;
     }
     /* a run from before the rules were data carries them from now on */
     if (duel_tag_run(&R) != 0) {
@@ -1781,6 +1879,13 @@ static int duel_resume_main(int argc, char **argv)
     if ((k = duel_rebuild_strength(&R, g)) != 0) {
         duel_run_free(&R);
         return k;
+    }
+    if (n_sets > 0 && g >= R.cfg.generations) {
+        /* it would reach config.ini and never the checkpoint: the next resume would find them disagreeing */
+        fprintf(stderr, "duel_evolve: resume: the run has played its %u generations: an override (--set) applies to "
+                        "generations to come; give --generations N with it to extend the run\n", g);
+        duel_run_free(&R);
+        return 2;
     }
     for (k = 0; k < n_sets; k++)
         duel_log(&R, "resume: override %s", sets[k]);
