@@ -252,6 +252,21 @@ static const char *duel_key_home(const char *name)
 }
 
 /* [opponents] play = a, b, ...: each a builtin:NAME or a file path (no commas) */
+int duel_list_next(const char **p, const char **item, size_t *len)
+{
+    const char *q = *p, *end, *stop;
+    while (*q == ' ' || *q == '\t')
+        q++;
+    end = strchr(q, ',');
+    stop = end != NULL ? end : q + strlen(q);
+    *item = q;
+    *p = end != NULL ? end + 1 : stop;
+    while (stop > q && (stop[-1] == ' ' || stop[-1] == '\t'))
+        stop--;
+    *len = (size_t)(stop - q);
+    return end != NULL;
+}
+
 static int duel_opp_play(duel_opponents *o, const char *v, char *err, size_t err_len)
 {
     const char *p = v, *stop0;
@@ -265,14 +280,9 @@ static int duel_opp_play(duel_opponents *o, const char *v, char *err, size_t err
             return -1;
         }
     while (*p != '\0') {
-        const char *end = strchr(p, ','), *stop;
+        const char *item;
         size_t len;
-        while (*p == ' ' || *p == '\t')
-            p++;
-        stop = end != NULL ? end : p + strlen(p);
-        while (stop > p && (stop[-1] == ' ' || stop[-1] == '\t'))
-            stop--;
-        len = (size_t)(stop - p);
+        int comma = duel_list_next(&p, &item, &len);
         if (len == 0) {
             snprintf(err, err_len, "[opponents] play: an empty name (opponents are separated by commas)");
             return -1;
@@ -286,7 +296,7 @@ static int duel_opp_play(duel_opponents *o, const char *v, char *err, size_t err
                      DUEL_OPP_MAX_SPEC - 1);
             return -1;
         }
-        memcpy(got.spec[n], p, len);
+        memcpy(got.spec[n], item, len);
         got.spec[n][len] = '\0';
         if (strncmp(got.spec[n], "builtin:", 8) == 0 && duel_builtin_parse(got.spec[n] + 8) < 0) {
             snprintf(err, err_len, "[opponents] play: '%s': no such builtin (idle, spinner, forager, hunter, "
@@ -294,8 +304,7 @@ static int duel_opp_play(duel_opponents *o, const char *v, char *err, size_t err
             return -1;
         }
         n++;
-        p = end != NULL ? end + 1 : stop;
-        if (end != NULL && *p == '\0') {
+        if (comma && *p == '\0') {
             snprintf(err, err_len, "[opponents] play: an empty name after the last comma");
             return -1;
         }

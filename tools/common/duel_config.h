@@ -108,4 +108,8 @@ int duel_same_topology(const neat_genome *a, const neat_genome *b);
  * outputs). -1 with a message in err. */
 int duel_config_check(const duel_config *cfg, char *err, size_t err_len);
 
+/* The next item of a comma-separated list ([opponents] play) at *p, blanks around it trimmed: its start and length;
+ * *p moves past it and its comma. 1 when a comma followed it, else 0 (the list is done once **p is '\0'). */
+int duel_list_next(const char **p, const char **item, size_t *len);
+
 #endif /* DUEL_CONFIG_H */

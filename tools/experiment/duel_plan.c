@@ -111,20 +111,18 @@ static int duel_plan_resolve_play(char *set, const char *base, char *err, size_t
     if (eq == NULL || !((klen == 4 && strncmp(set, "play", 4) == 0) ||
                         (klen == 14 && strncmp(set, "opponents.play", 14) == 0)))
         return 0;
+    for (p = eq + 1; *p != '\0'; p++)
+        if ((unsigned char)*p < 0x20 || *p == 0x7f)
+            return 0; /* refused, naming the byte, by the [opponents] reader (duel_plan_try_set) */
     n = (size_t)snprintf(out, sizeof out, "%.*s", (int)(klen + 1), set);
     for (p = eq + 1; *p != '\0';) {
-        const char *end = strchr(p, ','), *stop;
+        const char *at;
         char item[4200];
         size_t len;
-        while (*p == ' ' || *p == '\t')
-            p++;
-        stop = end != NULL ? end : p + strlen(p);
-        while (stop > p && (stop[-1] == ' ' || stop[-1] == '\t'))
-            stop--;
-        len = (size_t)(stop - p);
+        int comma = duel_list_next(&p, &at, &len), first = n == klen + 1;
         if (len >= sizeof item)
             len = sizeof item - 1; /* refused by the [opponents] reader as too long */
-        snprintf(item, sizeof item, "%.*s", (int)len, p);
+        snprintf(item, sizeof item, "%.*s", (int)len, at);
         if (item[0] != '\0' && item[0] != '/' && strncmp(item, "builtin:", 8) != 0) {
             if ((size_t)snprintf(joined, sizeof joined, "%s/%s", base, item) >= sizeof joined ||
                 realpath(joined, real) == NULL) {
@@ -134,14 +132,13 @@ static int duel_plan_resolve_play(char *set, const char *base, char *err, size_t
             }
             snprintf(item, sizeof item, "%s", real);
         }
-        n += (size_t)snprintf(out + n, n < sizeof out ? sizeof out - n : 0, "%s%s", p == eq + 1 ? "" : ", ", item);
+        n += (size_t)snprintf(out + n, n < sizeof out ? sizeof out - n : 0, "%s%s", first ? "" : ", ", item);
         if (n >= sizeof out) {
             snprintf(err, err_len, "play: too long once its paths are made absolute");
             return -1;
         }
-        if (end == NULL)
+        if (!comma)
             break;
-        p = end + 1;
     }
     memcpy(set, out, n + 1);
     return 0;
