@@ -96,6 +96,8 @@ static void duel_log(duel_run *R, const char *fmt, ...)
  * not hold, included). */
 #define DUEL_SEAL "; checksum "
 #define DUEL_SEAL_TAIL ": written by the run (a hand edit is refused by resume; give a change as resume --set KEY=VALUE)\n"
+/* what the seal records: the [run] keys the checkpoint does not hold, so that an edit of one is named */
+#define DUEL_SEAL_KEYS "; generations = %u, strength_every = %u\n"
 
 static int duel_write_config(const duel_run *R)
 {
@@ -117,6 +119,7 @@ static int duel_write_config(const duel_run *R)
     }
     fprintf(mem, "; the effective configuration of this run (duel_evolve config --dump format)\n");
     fprintf(mem, DUEL_SEAL "%016llx" DUEL_SEAL_TAIL, (unsigned long long)duel_blob_hash((const uint8_t *)body, blen));
+    fprintf(mem, DUEL_SEAL_KEYS, R->cfg.generations, R->cfg.strength_every);
     fwrite(body, 1, blen, mem);
     free(body);
     if (fclose(mem) != 0) {
@@ -1466,31 +1469,52 @@ static int duel_rebuild_dominance(duel_run *R)
  * rebuilt from the checkpoint, so a run missing some is refused with what
  * works. 0, or the exit status after one line. */
 /* Whether dir/config.ini is as the run wrote it: 1 (its seal holds), 0 (no seal: a run from before it, whose
- * [run] keys cannot be checked), -1 (edited since: the seal does not hold, or the file cannot be read). */
-static int duel_config_sealed(const char *dir)
+ * [run] keys cannot be checked), -1 (edited since: the seal does not hold, or the file cannot be read). With a
+ * seal, *gens and *every are the values the run wrote. */
+static int duel_config_sealed(const char *dir, uint32_t *gens, uint32_t *every)
 {
     char path[4200];
     uint8_t *text;
-    size_t len, a, b;
+    size_t len, a, b, c;
     unsigned long long want;
+    unsigned g, e;
     int r;
     duel_path(path, sizeof path, dir, "config.ini");
     if (duel_file_read(path, 1u << 20, &text, &len) != 0)
         return -1;
     for (a = 0; a < len && text[a] != '\n'; a++)
         ;
-    a++; /* the second line */
+    a++; /* the second line: the checksum; the third: the keys */
     if (a + strlen(DUEL_SEAL) + 16 > len || memcmp(text + a, DUEL_SEAL, strlen(DUEL_SEAL)) != 0) {
         free(text);
         return 0;
     }
     for (b = a; b < len && text[b] != '\n'; b++)
         ;
+    for (c = b + 1; c < len && text[c] != '\n'; c++)
+        ;
     r = -1;
-    if (b < len && sscanf((const char *)text + a + strlen(DUEL_SEAL), "%16llx", &want) == 1)
-        r = duel_blob_hash(text + b + 1, len - b - 1) == (uint64_t)want ? 1 : -1;
+    if (c < len && sscanf((const char *)text + a + strlen(DUEL_SEAL), "%16llx", &want) == 1 &&
+        sscanf((const char *)text + b + 1, "; generations = %u, strength_every = %u", &g, &e) == 2) {
+        *gens = g;
+        *every = e;
+        r = duel_blob_hash(text + c + 1, len - c - 1) == (uint64_t)want ? 1 : -1;
+    }
     free(text);
     return r;
+}
+
+/* 1 when one of the overrides sets [run] key (KEY=... or run.KEY=...). */
+static int duel_sets_key(char **sets, uint32_t n, const char *key)
+{
+    uint32_t k;
+    size_t n_key = strlen(key);
+    for (k = 0; k < n; k++) {
+        const char *v = strncmp(sets[k], "run.", 4) == 0 ? sets[k] + 4 : sets[k];
+        if (strncmp(v, key, n_key) == 0 && v[n_key] == '=')
+            return 1;
+    }
+    return 0;
 }
 
 /* generations.csv's last row without its newline (text, len bytes: len > 0 and text[len - 1] != '\n'): when it
@@ -1660,6 +1684,7 @@ static int duel_resume_main(int argc, char **argv)
     char err[600], path[4200], *sets[64], differs[700] = "";
     uint32_t gens = 0, n_sets = 0, k, g;
     int i, c, have_gens = 0, shorten = 0, e, sealed;
+    uint32_t seal_gens = 0, seal_every = 0;
     duel_config before;
 
     memset(&R, 0, sizeof R);
@@ -1756,7 +1781,7 @@ static int duel_resume_main(int argc, char **argv)
 
     /* a hand edit of any key is refused: the NEAT and coevolution keys are named below (against the checkpoint),
      * the others ([run]'s generations, strength_every, ...) by the seal the run wrote */
-    sealed = duel_config_sealed(R.dir);
+    sealed = duel_config_sealed(R.dir, &seal_gens, &seal_every);
     duel_path(path, sizeof path, R.dir, "checkpoint.bin");
     c = R.cfg.opp.n > 0 ? duel_pop_ckpt_load(path, &pop) : duel_ckpt_load("", path, &R.coev);
     if (c < 0)
@@ -1836,12 +1861,20 @@ static int duel_resume_main(int argc, char **argv)
             return 2;
         }
     }
-    if (sealed < 0 && c == 0) {
-        fprintf(stderr, "duel_evolve: %s/config.ini was edited by hand since the run wrote it (its checksum line no "
-                        "longer matches; the parameters the checkpoint holds are unchanged, so a [run] key such as "
-                        "generations or strength_every): a hand edit of config.ini is not taken (give a change as "
-                        "resume --generations N or --set KEY=VALUE, which is applied and logged, or restore "
-                        "config.ini)\n", R.dir);
+    /* the [run] keys the checkpoint does not hold, against what the run wrote: an edit is refused, naming the key,
+     * unless this resume gives the same change the right way (as the parameters above) */
+    if (sealed < 0 && c == 0 &&
+        ((before.generations != seal_gens &&
+          !((have_gens || duel_sets_key(sets, n_sets, "generations")) && R.cfg.generations == before.generations)) ||
+         (before.strength_every != seal_every &&
+          !(duel_sets_key(sets, n_sets, "strength_every") && R.cfg.strength_every == before.strength_every)))) {
+        int g_edit = before.generations != seal_gens &&
+                     !((have_gens || duel_sets_key(sets, n_sets, "generations")) && R.cfg.generations == before.generations);
+        fprintf(stderr, "duel_evolve: %s/config.ini says '%s = %u' but the run wrote '%s = %u': a hand edit of "
+                        "config.ini is not taken (give a change as %s, which is applied and logged, or restore "
+                        "config.ini)\n", R.dir, g_edit ? "generations" : "strength_every",
+                g_edit ? before.generations : before.strength_every, g_edit ? "generations" : "strength_every",
+                g_edit ? seal_gens : seal_every, g_edit ? "resume --generations N" : "--set strength_every=K");
         duel_run_free(&R);
         return 2;
     }
