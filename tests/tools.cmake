@@ -21,7 +21,7 @@ if(NEAT_FUZZ)
   neat_add_fuzz(fuzz_rules)
   target_link_libraries(fuzz_rules PRIVATE duelsim)
   neat_add_fuzz(fuzz_ini ${PROJECT_SOURCE_DIR}/tools/common/duel_config.c ${PROJECT_SOURCE_DIR}/bench/bench_config.c
-                ${PROJECT_SOURCE_DIR}/tools/experiment/duel_plan.c)
+                ${PROJECT_SOURCE_DIR}/tools/experiment/duel_plan.c ${PROJECT_SOURCE_DIR}/tools/common/duel_runtag.c)
   target_include_directories(fuzz_ini PRIVATE ${PROJECT_SOURCE_DIR}/bench ${PROJECT_SOURCE_DIR}/tools/experiment)
   target_link_libraries(fuzz_ini PRIVATE neattools duelfiles duelsim)
   neat_add_fuzz(fuzz_lcm_log ${PROJECT_SOURCE_DIR}/tools/cli/duel_log_cmd.c ${PROJECT_SOURCE_DIR}/tools/common/duel_trace.c)

@@ -76,8 +76,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         duel_cmp_cache c;
         if (duel_cmp_cache_parse(&c, "c.csv", (const char *)data, size, err, sizeof err) == 0) {
             size_t i;
-            if (size > 0 && data[size - 1] != '\n')
-                __builtin_trap(); /* a cut last line is refused */
+            if (size > 0 && data[size - 1] != '\n') {
+                /* a last line without its newline is taken only as a whole entry (issue 49): the same cache as with
+                 * the newline, and written back whole at the next save */
+                duel_cmp_cache whole;
+                char *t = (char *)malloc(size + 1);
+                if (t == NULL)
+                    abort();
+                memcpy(t, data, size);
+                t[size] = '\n';
+                if (duel_cmp_cache_parse(&whole, "c.csv", t, size + 1, err, sizeof err) != 0 || whole.n != c.n ||
+                    !c.dirty)
+                    __builtin_trap();
+                duel_cmp_cache_free(&whole);
+                free(t);
+            }
             for (i = 0; i < c.n; i++)
                 if (c.e[i].tally.wins_a + c.e[i].tally.wins_b + c.e[i].tally.draws + c.e[i].tally.timeouts != 288u ||
                     (i > 0 && !(c.e[i - 1].a < c.e[i].a || (c.e[i - 1].a == c.e[i].a && c.e[i - 1].b < c.e[i].b))) ||
