@@ -12,6 +12,7 @@ package binds them. docs/python.md is the guide::
 from __future__ import annotations
 
 from . import deploy, errors, gym, runs
+from .data import data_path
 from ._core import (
     Q15_ONE,
     VERSION,
@@ -61,6 +62,7 @@ __all__ = [
     "from_q15",
     "q15",
     "seed_derive",
+    "data_path",
     "deploy",
     "errors",
     "gym",

@@ -264,3 +264,12 @@ def test_runs_resume_can_shorten(tmp_path: pathlib.Path) -> None:
     # the flag reaches the command: the refusal is now the one for a run that played more than that
     with pytest.raises(runs.RunError, match="played 2 generations already, more than 1"):
         runs.resume(tmp_path / "r", generations=1, shorten=True)
+
+
+def test_the_guides_files_ship_with_the_package() -> None:
+    assert nd.Params.from_ini(nd.data_path("bench/xor.ini")).pop_size == 150
+    assert nd.data_path("configs/quick.ini").read_bytes() == (ROOT / "configs" / "quick.ini").read_bytes()
+    with pytest.raises(FileNotFoundError, match="configs/quick.ini"):
+        nd.data_path("configs/nothing.ini")
+    with pytest.raises(FileNotFoundError):
+        nd.data_path("../../../etc/passwd")

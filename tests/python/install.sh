@@ -22,6 +22,10 @@ assert len(recs) == 3 and recs[-1]["evaluations"] == 60
 import pathlib
 pkg = pathlib.Path(nd.__file__).parent
 assert (pkg / "py.typed").exists() and (pkg / "_core.pyi").exists(), sorted(p.name for p in pkg.iterdir())
+# the guide's configuration files ship with it (neat_duel.data_path)
+assert nd.Params.from_ini(nd.data_path("bench/xor.ini")).pop_size == 150
+assert nd.DuelConfig.from_ini(nd.data_path("configs/quick.ini")).generations > 0
+assert nd.data_path("configs/plans/small.ini").is_file()
 print("ok", nd.__version__, pkg)
 PY
   )
