@@ -316,7 +316,9 @@ void nd_bind_population(nb::module_ &m)
                     ~running_flag() { f = false; }
                 };
                 nb::list records;
-                uint64_t evaluations = 0;
+                // counted from the population's generation 0 (each generation evaluates every genome once), so a
+                // second run, or a run after a checkpoint load, goes on counting
+                uint64_t evaluations = (uint64_t)neat_pop_generation(pop) * neat_pop_size(pop);
                 for (uint32_t gen = 0; gen < generations; gen++) {
                     uint32_t n = neat_pop_size(pop);
                     const neat_params *p = neat_pop_params(pop);
@@ -392,7 +394,9 @@ void nd_bind_population(nb::module_ &m)
                 if (g == nullptr)
                     return nb::none();
                 return nb::cast(nd_genome_copy(g, *neat_pop_params(s.pop)));
-            }, nb::sig("def best_ever(self) -> Genome | None"), "The best genome of every generation so far.")
+            }, nb::sig("def best_ever(self) -> Genome | None"),
+            "The one genome with the highest fitness of all generations evaluated so far (a copy; None\n"
+            "before the first epoch).")
         .def("species", [](const nd_population &s) {
                 neat_pop *pop = nd_pop(s);
                 nb::list out;

@@ -273,3 +273,18 @@ def test_the_guides_files_ship_with_the_package() -> None:
         nd.data_path("configs/nothing.ini")
     with pytest.raises(FileNotFoundError):
         nd.data_path("../../../etc/passwd")
+
+
+def test_evaluations_go_on_after_a_checkpoint_load() -> None:
+    def fit(g: nd.Genome) -> float:
+        return sum(g.network().step([1.0, 0.0])) + 0.1
+
+    params = nd.Params(pop_size=20, n_inputs=2, n_outputs=1)
+    whole = nd.Population(params, seed=4).run(fit, 5)
+    pop = nd.Population(params, seed=4)
+    assert pop.best_ever is None
+    first = pop.run(fit, 3)
+    assert pop.best_ever is not None
+    again = nd.Population.from_bytes(pop.to_bytes()).run(fit, 2)
+    assert [r["evaluations"] for r in first + again] == [r["evaluations"] for r in whole] == [20, 40, 60, 80, 100]
+    assert pop.run(fit, 1)[0]["evaluations"] == 80  # a second run of the same population goes on too
