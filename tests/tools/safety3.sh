@@ -227,6 +227,10 @@ messages)
     fail "compare refused a cache missing its last newline"
   grep -q "(0 played, [1-9][0-9]* from the cache)" "$tmp/out" || fail "the cache was not used: $(cat "$tmp/out")"
   [ "$(tail -c 1 "$tmp/cache.csv" | od -An -c | tr -d ' ')" = '\n' ] || fail "the cache was not written back whole"
+  # a name with control bytes is echoed escaped: one line whatever it holds
+  expect_bad 'dot: -o .*no\\x0adir/x.dot: cannot write: .*no\\x0adir does not exist' \
+    dot "$tmp/full/champions/gen-00001.blob" -o "$tmp/no
+dir/x.dot"
   if command -v mpirun > /dev/null; then
     for v in abc 0x10 inf 0 -5 1e7; do
       rc=0

@@ -11,6 +11,7 @@
 
 #include "duel_files.h"
 #include "duel_outputs.h"
+#include "duel_text.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -163,15 +164,17 @@ static int duel_parent_ok(const char *cmd, const char *opt, const char *path)
     char dir[PATH_MAX + 1];
     const char *slash = strrchr(path, '/');
     struct stat st;
+    char ep[1100], ed[1100];
     if (slash == NULL)
         return 0;
+    duel_text_escape(path, ep, sizeof ep);
     if (strlen(path) >= sizeof dir) {
-        fprintf(stderr, "duel_evolve: %s: %s %s: name too long\n", cmd, opt, path);
+        fprintf(stderr, "duel_evolve: %s: %s %s: name too long\n", cmd, opt, ep);
         return 2;
     }
     snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: %s: %s %s: cannot write: %s %s\n", cmd, opt, path, dir,
+        fprintf(stderr, "duel_evolve: %s: %s %s: cannot write: %s %s\n", cmd, opt, ep, duel_text_escape(dir, ed, sizeof ed),
                 stat(dir, &st) != 0 ? "does not exist" : "is not a directory");
         return 2;
     }
@@ -195,8 +198,10 @@ static int duel_out_check(const char *cmd, const char *opt, const char *path, co
     size_t i, got = 0;
     ssize_t r;
     int fd, resolved;
+    char ep[1100], ei[1100], ed[1100];
+    duel_text_escape(path, ep, sizeof ep); /* every name in a message one line, whatever bytes it holds */
     if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: %s: %s %s is a directory: name a file\n", cmd, opt, path);
+        fprintf(stderr, "duel_evolve: %s: %s %s is a directory: name a file\n", cmd, opt, ep);
         return 2;
     }
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
@@ -209,28 +214,28 @@ static int duel_out_check(const char *cmd, const char *opt, const char *path, co
             continue;
         if (duel_same_path(path, inputs[i])) {
             fprintf(stderr, "duel_evolve: %s: %s %s is also one of its inputs or outputs (%s): refusing to write over it\n", cmd,
-                    opt, path, inputs[i]);
+                    opt, ep, duel_text_escape(inputs[i], ei, sizeof ei));
             return 2;
         }
         if (resolved && stat(inputs[i], &si) == 0 && S_ISDIR(si.st_mode) && realpath(inputs[i], rin) != NULL &&
             duel_in_run(rout, rin)) {
             fprintf(stderr, "duel_evolve: %s: %s %s is a file of the run %s it reads: refusing to write over it\n",
-                    cmd, opt, path, inputs[i]);
+                    cmd, opt, ep, duel_text_escape(inputs[i], ei, sizeof ei));
             return 2;
         }
     }
     /* a run's or an experiment's own file is never an output: --force does not lift this */
     if (resolved && !own && duel_protected(rout, rdir)) {
         fprintf(stderr, "duel_evolve: %s: %s %s is a file of the %s directory %s: refusing to write there "
-                        "(choose a path outside it)\n", cmd, opt, path, duel_dir_role(rdir) == 2 ? "experiment" : "run",
-                rdir);
+                        "(choose a path outside it)\n", cmd, opt, ep, duel_dir_role(rdir) == 2 ? "experiment" : "run",
+                duel_text_escape(rdir, ed, sizeof ed));
         return 2;
     }
     if (stat(path, &st) != 0 || st.st_size == 0 || force)
         return 0; /* missing (created), empty (nothing to lose), or --force */
     fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-        fprintf(stderr, "duel_evolve: %s: %s %s: cannot read it to see what it is: %s\n", cmd, opt, path,
+        fprintf(stderr, "duel_evolve: %s: %s %s: cannot read it to see what it is: %s\n", cmd, opt, ep,
                 strerror(errno));
         return 2;
     }
@@ -247,7 +252,7 @@ static int duel_out_check(const char *cmd, const char *opt, const char *path, co
         (kind->ours != NULL && kind->ours(head, got, path)))
         return 0;
     fprintf(stderr, "duel_evolve: %s: %s %s exists and is not %s: refusing to replace it (--force replaces it)\n", cmd,
-            opt, path, kind->name);
+            opt, ep, kind->name);
     return 2;
 }
 
