@@ -38,9 +38,13 @@ int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, co
     p.n_inputs = neat_get_u32(&r);
     p.n_outputs = neat_get_u32(&r);
     p.max_nodes = NRT_MAX_NODES;
-    if (!r.err && (p.n_inputs < 1 || p.n_outputs < 1 || p.n_inputs >= NRT_MAX_NODES || p.n_outputs >= NRT_MAX_NODES ||
-                   p.n_inputs + p.n_outputs + 1 > NRT_MAX_NODES)) {
+    /* each refusal names its field's offset: n_inputs at 12, n_outputs at 16 (the one that makes the sum too large) */
+    if (!r.err && (p.n_inputs < 1 || p.n_inputs >= NRT_MAX_NODES)) {
         r.off = 12;
+        neat_fail(&r, NEAT_E_FORMAT);
+    } else if (!r.err &&
+               (p.n_outputs < 1 || p.n_outputs >= NRT_MAX_NODES || p.n_inputs + p.n_outputs + 1 > NRT_MAX_NODES)) {
+        r.off = 16;
         neat_fail(&r, NEAT_E_FORMAT);
     }
     if (!r.err)

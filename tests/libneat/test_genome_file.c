@@ -157,9 +157,15 @@ static void test_every_truncation_and_flip_refused(void **state)
     off = 0;
     assert_int_equal(neat_genome_load(&back, NULL, NULL, bad, len, NULL, &off), NEAT_E_FORMAT);
     assert_int_equal(off, 8);
-    /* no outputs: the shape at 12 */
+    /* no outputs: n_outputs' own offset, 16 (issue 49: the loader names the field; it said 12, the shape's start) */
     memcpy(bad, buf, len);
     memset(bad + 16, 0, 4);
+    reseal(bad, len);
+    assert_int_equal(neat_genome_load(&back, NULL, NULL, bad, len, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 16);
+    /* no inputs: 12 */
+    memcpy(bad, buf, len);
+    memset(bad + 12, 0, 4);
     reseal(bad, len);
     assert_int_equal(neat_genome_load(&back, NULL, NULL, bad, len, NULL, &off), NEAT_E_FORMAT);
     assert_int_equal(off, 12);
