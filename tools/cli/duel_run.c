@@ -1517,35 +1517,34 @@ static int duel_sets_key(char **sets, uint32_t n, const char *key)
     return 0;
 }
 
-/* generations.csv's last row without its newline (text, len bytes: len > 0 and text[len - 1] != '\n'): when it
- * is a whole row of a generation the checkpoint holds (before g), the one byte is added to the file (the data is
- * whole) and logged; a row of a generation after the checkpoint is left to be cut, as a torn one. 0 when repaired,
- * else -1. */
-static int duel_repair_last_newline(duel_run *R, const char *path, const uint8_t *text, size_t len, uint32_t g)
+/* generations.csv's last row without its newline (*text, *len bytes, malloc'd: *len > 0 and the last byte not
+ * '\n'): when it is a whole row of a generation the checkpoint holds (before g), the one byte is added to the file
+ * (the data is whole) and to *text (*len one more), and logged; a row of a generation after the checkpoint is left
+ * to be cut, as a torn one. 0 when repaired, else -1 (*len as it was). */
+static int duel_repair_last_newline(duel_run *R, const char *path, uint8_t **text, size_t *len, uint32_t g)
 {
     duel_gen_row *rows;
-    size_t n;
-    char err[700], *copy = (char *)malloc(len + 1);
+    size_t n, at = *len;
+    const uint8_t *t = *text;
+    uint8_t *grown;
+    char err[700];
     int r;
     /* a whole row ends in its wall time written "%.3f": a row cut inside that field is torn, not whole */
-    if (len < 5 || text[len - 4] != '.' || !isdigit((unsigned char)text[len - 5]) ||
-        !isdigit((unsigned char)text[len - 3]) || !isdigit((unsigned char)text[len - 2]) ||
-        !isdigit((unsigned char)text[len - 1])) {
-        free(copy);
+    if (at < 5 || t[at - 4] != '.' || !isdigit((unsigned char)t[at - 5]) || !isdigit((unsigned char)t[at - 3]) ||
+        !isdigit((unsigned char)t[at - 2]) || !isdigit((unsigned char)t[at - 1]))
         return -1;
-    }
-    if (copy == NULL)
+    if ((grown = (uint8_t *)realloc(*text, at + 1)) == NULL)
         return -1;
-    memcpy(copy, text, len);
-    copy[len] = '\n';
-    r = duel_generations_parse(path, copy, len + 1, &rows, &n, err, sizeof err);
-    free(copy);
+    *text = grown;
+    grown[at] = '\n'; /* past *len until the file has it too */
+    r = duel_generations_parse(path, (const char *)grown, at + 1, &rows, &n, err, sizeof err);
     if (r != 0)
         return -1;
     r = n > 0 && rows[n - 1].generation < g ? 0 : -1;
     free(rows);
     if (r != 0 || duel_file_append(path, "\n") != 0)
         return -1;
+    *len = at + 1;
     duel_log(R, "resume: generations.csv's last row lacked its newline (the row is whole): added");
     return 0;
 }
@@ -1571,15 +1570,8 @@ static int duel_check_generations(duel_run *R, uint32_t g)
     /* the complete rows: a torn last one belongs to the generation after the checkpoint, or is lost (below) */
     for (keep = len; keep > 0 && text[keep - 1] != '\n'; keep--)
         ;
-    if (keep < len && duel_repair_last_newline(R, path, text, len, g) == 0) {
-        /* the row was whole, only its newline missing: added; the file read again as it now is */
-        free(text);
-        if (duel_file_read(path, DUEL_GENERATIONS_MAX_FILE, &text, &len) != 0) {
-            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, duel_file_strerror(errno));
-            return 2;
-        }
-        keep = len;
-    }
+    if (keep < len && duel_repair_last_newline(R, path, &text, &len, g) == 0)
+        keep = len; /* the row was whole, only its newline missing: added, to the file and to text */
     r = duel_generations_parse(path, (const char *)text, keep, &rows, &n, err, sizeof err);
     free(text);
     if (r == -3) { /* a CRLF copy or a duplicated row: the rows are there, the fix is named */
@@ -1863,20 +1855,22 @@ static int duel_resume_main(int argc, char **argv)
     }
     /* the [run] keys the checkpoint does not hold, against what the run wrote: an edit is refused, naming the key,
      * unless this resume gives the same change the right way (as the parameters above) */
-    if (sealed < 0 && c == 0 &&
-        ((before.generations != seal_gens &&
-          !((have_gens || duel_sets_key(sets, n_sets, "generations")) && R.cfg.generations == before.generations)) ||
-         (before.strength_every != seal_every &&
-          !(duel_sets_key(sets, n_sets, "strength_every") && R.cfg.strength_every == before.strength_every)))) {
-        int g_edit = before.generations != seal_gens &&
-                     !((have_gens || duel_sets_key(sets, n_sets, "generations")) && R.cfg.generations == before.generations);
-        fprintf(stderr, "duel_evolve: %s/config.ini says '%s = %u' but the run wrote '%s = %u': a hand edit of "
-                        "config.ini is not taken (give a change as %s, which is applied and logged, or restore "
-                        "config.ini)\n", R.dir, g_edit ? "generations" : "strength_every",
-                g_edit ? before.generations : before.strength_every, g_edit ? "generations" : "strength_every",
-                g_edit ? seal_gens : seal_every, g_edit ? "resume --generations N" : "--set strength_every=K");
-        duel_run_free(&R);
-        return 2;
+    {
+        /* an edit is one the seal does not explain and this resume does not give again as an override */
+        int g_edit = sealed < 0 && c == 0 && before.generations != seal_gens &&
+                     !((have_gens || duel_sets_key(sets, n_sets, "generations")) &&
+                       R.cfg.generations == before.generations);
+        int e_edit = sealed < 0 && c == 0 && before.strength_every != seal_every &&
+                     !(duel_sets_key(sets, n_sets, "strength_every") && R.cfg.strength_every == before.strength_every);
+        if (g_edit || e_edit) {
+            fprintf(stderr, "duel_evolve: %s/config.ini says '%s = %u' but the run wrote '%s = %u': a hand edit of "
+                            "config.ini is not taken (give a change as %s, which is applied and logged, or restore "
+                            "config.ini)\n", R.dir, g_edit ? "generations" : "strength_every",
+                    g_edit ? before.generations : before.strength_every, g_edit ? "generations" : "strength_every",
+                    g_edit ? seal_gens : seal_every, g_edit ? "resume --generations N" : "--set strength_every=K");
+            duel_run_free(&R);
+            return 2;
+        }
     }
     /* a run from before the rules were data carries them from now on */
     if (duel_tag_run(&R) != 0) {
