@@ -117,7 +117,7 @@ static int duel_write_config(const duel_run *R)
         free(body);
         return -1;
     }
-    fprintf(mem, "; the effective configuration of this run (duel_evolve config --dump format)\n");
+    fprintf(mem, DUEL_RUN_CONFIG_MARK " (duel_evolve config --dump format)\n");
     fprintf(mem, DUEL_SEAL "%016llx" DUEL_SEAL_TAIL, (unsigned long long)duel_blob_hash((const uint8_t *)body, blen));
     fprintf(mem, DUEL_SEAL_KEYS, R->cfg.generations, R->cfg.strength_every);
     fwrite(body, 1, blen, mem);
@@ -1173,7 +1173,7 @@ static int duel_dir_is_runs(const char *dir, char *what, size_t cap)
         ok = 0;
     }
     if (ok && duel_file_read(path, 1u << 20, &text, &len) == 0) {
-        static const char mark[] = "; the effective configuration of this run";
+        static const char mark[] = DUEL_RUN_CONFIG_MARK;
         ok = len >= sizeof mark - 1 && memcmp(text, mark, sizeof mark - 1) == 0;
         if (!ok)
             snprintf(what, cap, "holds a config.ini that a run did not write");

@@ -111,9 +111,9 @@ static int duel_dir_role(const char *dir)
     char path[PATH_MAX + 64];
     struct stat st;
     snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
-    if (lstat(path, &st) == 0 || duel_starts_with(dir, "config.ini", "; the effective configuration of this run"))
+    if (lstat(path, &st) == 0 || duel_starts_with(dir, "config.ini", DUEL_RUN_CONFIG_MARK))
         return 1;
-    return duel_starts_with(dir, "plan.ini", "; the plan of this experiment") ? 2 : 0;
+    return duel_starts_with(dir, "plan.ini", DUEL_EXP_PLAN_MARK) ? 2 : 0;
 }
 
 /* 1 for the name of a champion file (a blob or genome, or a temporary of one); a picture drawn beside it is not. */

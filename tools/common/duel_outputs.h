@@ -5,6 +5,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The first line of a run's config.ini and of an experiment's plan.ini (their writers start each file with it;
+ * a directory is recognised as a run's or an experiment's by it). */
+#define DUEL_RUN_CONFIG_MARK "; the effective configuration of this run"
+#define DUEL_EXP_PLAN_MARK "; the plan of this experiment"
+
 /* How much of an existing file is looked at to recognise it. */
 #define DUEL_OUT_HEAD 4096
 

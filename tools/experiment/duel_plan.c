@@ -7,14 +7,15 @@
 #include <sys/stat.h>
 
 #include "duel_files.h"
+#include "duel_outputs.h"
 #include "duel_plan.h"
 #include "duel_runtag.h"
 #include "duel_world_cfg.h"
 #include "duel_text.h"
 #include "neat_ini.h"
 
-#define DUEL_PLAN_HEADER "; the plan of this experiment (duel_evolve experiment): its methods' run configurations are configs/NAME.ini\n"
-#define DUEL_PLAN_CFG_HEADER "; the effective configuration of this run (duel_evolve config --dump format)\n"
+#define DUEL_PLAN_HEADER DUEL_EXP_PLAN_MARK " (duel_evolve experiment): its methods' run configurations are configs/NAME.ini\n"
+#define DUEL_PLAN_CFG_HEADER DUEL_RUN_CONFIG_MARK " (duel_evolve config --dump format)\n"
 
 typedef struct duel_plan_reader {
     duel_plan *p;
