@@ -35,7 +35,8 @@ extern "C" {
 #define NEAT_VERSION_MINOR NEAT_DUEL_VERSION_MINOR
 #define NEAT_CHECKPOINT_VERSION 4 /* checkpoint format, apart from the code (versions 2 and 3 still load; a
                                    * population using none of NEAT C++'s switches is written as version 3) */
-#define NEAT_GENOME_FILE_VERSION 1 /* genome file format (neat_genome_save) */
+#define NEAT_GENOME_FILE_VERSION 2 /* genome file format: 2 records the genome's origin (neat_genome_save_origin); 1
+                                    * (neat_genome_save) records none and still loads */
 #define NEAT_GENOME_FILE_MAGIC "NEATGENM" /* its first 8 bytes */
 
 /* the export attribute of the shared libraries (empty in static and firmware builds) */
@@ -344,6 +345,30 @@ NEAT_API int neat_genome_save(const neat_genome *g, uint32_t n_inputs, uint32_t 
  * problem; g is then empty. */
 NEAT_API int neat_genome_load(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs, const uint8_t *buf,
                               size_t len, const neat_alloc *a, size_t *err_offset);
+
+/* Where a genome was made, as a genome file of version 2 records it: the
+ * network step its fitness was measured with and the game tag of its run
+ * (opaque bytes, at most NEAT_GAME_MAX: the duel's tools put the run's tag
+ * there, world rules first), so that a genome copied out of its run is still
+ * played as it was evolved. */
+typedef struct neat_genome_origin {
+    uint32_t version;   /* load: the file's format version; 1 records no origin (sync, no tag) */
+    int net_step;       /* NEAT_STEP_SYNC or NEAT_STEP_PROPAGATE */
+    uint32_t tag_len;   /* the tag's length */
+    const uint8_t *tag; /* save: tag_len bytes (NULL when 0); load: points into the loaded buffer */
+} neat_genome_origin;
+/* neat_genome_save with the origin (version 2); origin NULL writes version 1,
+ * byte for byte neat_genome_save's. NEAT_E_ARG also for a step that is not
+ * a mode or a tag longer than NEAT_GAME_MAX. */
+NEAT_API int neat_genome_save_origin(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
+                                     const neat_genome_origin *origin, uint8_t **buf, size_t *len,
+                                     const neat_alloc *a);
+/* neat_genome_load that also reads the origin into *origin (NULL: ignored):
+ * a version-1 file gives version 1, sync and an empty tag. The tag's step
+ * and length are checked (at offsets 20 and 24) before the genome is read. */
+NEAT_API int neat_genome_load_origin(neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs,
+                                     neat_genome_origin *origin, const uint8_t *buf, size_t len,
+                                     const neat_alloc *a, size_t *err_offset);
 
 /* ---- population ---------------------------------------------------------- */
 typedef struct neat_pop neat_pop;

@@ -56,9 +56,13 @@ struct nd_genome {
     const neat_genome *borrowed = nullptr; // the population's genome, during one fitness call only
     uint32_t n_inputs = 0, n_outputs = 0;
     int net_step = NEAT_STEP_SYNC;
+    // where a genome file says it was made (docs/formats.md, genome file version 2): kept to be written again
+    bool has_origin = false;
+    std::string origin_tag; // its run's game tag (the duel's world rules first)
     nd_genome() { neat_genome_init(&g); }
     nd_genome(nd_genome &&o) noexcept
-        : g(o.g), borrowed(o.borrowed), n_inputs(o.n_inputs), n_outputs(o.n_outputs), net_step(o.net_step)
+        : g(o.g), borrowed(o.borrowed), n_inputs(o.n_inputs), n_outputs(o.n_outputs), net_step(o.net_step),
+          has_origin(o.has_origin), origin_tag(std::move(o.origin_tag))
     {
         neat_genome_init(&o.g);
         o.borrowed = nullptr;

@@ -200,6 +200,8 @@ void nd_bind_duel(nb::module_ &m)
                 const char *n = duel_rules_name(&s.cfg.world);
                 return std::string(n != nullptr ? n : "custom");
             }, "The world's name (v1), or 'custom' for rules set key by key.")
+        .def_prop_ro("world_id", [](const nd_duel_config &s) { return duel_rules_id(&s.cfg.world); },
+                     "The world's identity: the 64-bit FNV-1a hash of its rules' canonical bytes (docs/formats.md).")
         .def("to_ini", [](const nd_duel_config &s) { return nd_config_text(s.cfg); },
              "Every key of every section, as duel_evolve config --dump writes them (a run's config.ini).")
         .def("coevolution", [](const nd_duel_config &s) {

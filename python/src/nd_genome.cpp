@@ -6,6 +6,7 @@
 
 #include <nanobind/stl/string.h>
 
+#include "duel.h"
 #include "nd.h"
 
 // numpy's structured dtypes of the C structs (neat_node, neat_conn), built once by neat_duel._dtypes from these
@@ -55,7 +56,8 @@ static nd_genome *nd_genome_from_bytes(const uint8_t *b, size_t len, const std::
     nd_genome *r = new nd_genome();
     size_t off = 0;
     uint32_t ni = 0, no = 0;
-    int err = neat_genome_load(&r->g, &ni, &no, b, len, nullptr, &off);
+    neat_genome_origin o;
+    int err = neat_genome_load_origin(&r->g, &ni, &no, &o, b, len, nullptr, &off);
     if (err) {
         delete r;
         throw nd_error(err, name + ": " + nd_strerror(err) + " at byte offset " + std::to_string(off), name,
@@ -63,7 +65,33 @@ static nd_genome *nd_genome_from_bytes(const uint8_t *b, size_t len, const std::
     }
     r->n_inputs = ni;
     r->n_outputs = no;
+    // a file that records its step is played in it (a propagate champion is never run as sync)
+    r->net_step = o.net_step;
+    r->has_origin = o.version >= 2;
+    if (o.tag_len > 0)
+        r->origin_tag.assign((const char *)o.tag, o.tag_len);
     return r;
+}
+
+// The genome file's bytes: version 2 with the origin when there is one to record (a loaded origin, or a step
+// other than sync), else version 1, byte for byte as before origins existed.
+static nb::bytes nd_genome_bytes(const nd_genome &s)
+{
+    uint8_t *buf = nullptr;
+    size_t len = 0;
+    neat_genome_origin o;
+    std::memset(&o, 0, sizeof o);
+    o.version = 2;
+    o.net_step = s.net_step;
+    o.tag_len = (uint32_t)s.origin_tag.size();
+    o.tag = s.origin_tag.empty() ? nullptr : (const uint8_t *)s.origin_tag.data();
+    bool with = s.has_origin || s.net_step != NEAT_STEP_SYNC;
+    int err = neat_genome_save_origin(&s.gen(), s.n_inputs, s.n_outputs, with ? &o : nullptr, &buf, &len, nullptr);
+    if (err)
+        nd_fail(err, "saving a genome");
+    nb::bytes b((const char *)buf, len);
+    std::free(buf);
+    return b;
 }
 
 nb::object nd_network_of(const nd_genome &g)
@@ -144,6 +172,19 @@ void nd_bind_genome(nb::module_ &m)
             "The connection genes, sorted by innovation number: a read-only structured array (in, out\n"
             "uint32 node ids; weight float64; innov uint32; enabled uint8), a view of the genome's memory.")
         .def_prop_ro("n_inputs", [](const nd_genome &s) { return s.n_inputs; }, "Inputs of its task, without the bias.")
+        .def_prop_ro("step", [](const nd_genome &s) { return s.net_step == NEAT_STEP_PROPAGATE ? "propagate" : "sync"; },
+                     nb::sig("def step(self) -> str"),
+                     "The network step it is evaluated with, 'sync' or 'propagate': its population's, or what\n"
+                     "its genome file records (a file of format 1 records none: 'sync').")
+        .def_prop_ro("world_id", [](const nd_genome &s) -> nb::object {
+                duel_rules r;
+                if (s.origin_tag.size() < DUEL_RULES_BYTES ||
+                    duel_rules_decode(&r, (const uint8_t *)s.origin_tag.data(), DUEL_RULES_BYTES, nullptr) != DUEL_OK)
+                    return nb::none();
+                return nb::int_(duel_rules_id(&r));
+            }, nb::sig("def world_id(self) -> int | None"),
+            "The identity of the duel world its genome file says it was evolved in (DuelConfig.world_id's\n"
+            "number), None when the file records none.")
         .def_prop_ro("n_outputs", [](const nd_genome &s) { return s.n_outputs; }, "Outputs of its task.")
         .def_prop_ro("n_hidden", [](const nd_genome &s) { return neat_genome_hidden_count(&s.gen()); }, "Hidden nodes.")
         .def_prop_ro("n_enabled", [](const nd_genome &s) { return neat_genome_enabled_count(&s.gen()); },
@@ -158,30 +199,13 @@ void nd_bind_genome(nb::module_ &m)
         .def("distance", [](const nd_genome &a, const nd_genome &b, const nd_params &p) {
                 return neat_genome_distance(&a.gen(), &b.gen(), &p.p);
             }, nb::arg("other"), nb::arg("params"), "The compatibility distance delta under params' c1, c2, c3.")
-        .def("to_bytes", [](const nd_genome &s) {
-                uint8_t *buf = nullptr;
-                size_t len = 0;
-                int err = neat_genome_save(&s.gen(), s.n_inputs, s.n_outputs, &buf, &len, nullptr);
-                if (err)
-                    nd_fail(err, "saving a genome");
-                nb::bytes b((const char *)buf, len);
-                std::free(buf);
-                return b;
-            }, "The genome file's bytes (docs/formats.md): every gene, exact weights, a checksum.")
+        .def("to_bytes", &nd_genome_bytes,
+             "The genome file's bytes (docs/formats.md): every gene, exact weights, a checksum, and\n"
+             "where it was made (its step, and the run's tag a loaded file recorded).")
         .def("save", [](const nd_genome &s, const nd_path &fpath) {
                 const std::string path = fpath.string();
-                uint8_t *buf = nullptr;
-                size_t len = 0;
-                int err = neat_genome_save(&s.gen(), s.n_inputs, s.n_outputs, &buf, &len, nullptr);
-                if (err)
-                    nd_fail(err, "saving a genome");
-                try {
-                    nd_write_file(path, buf, len);
-                } catch (...) {
-                    std::free(buf);
-                    throw;
-                }
-                std::free(buf);
+                nb::bytes b = nd_genome_bytes(s);
+                nd_write_file(path, (const uint8_t *)b.c_str(), b.size());
             }, nb::arg("path"),
             "Writes the genome file (what duel_evolve writes as champions/gen-G.genome; a run can start\n"
             "from it), through a temporary file and a rename.")

@@ -84,3 +84,30 @@ def test_files_of_duel_evolve(tmp_path: pathlib.Path) -> None:
     r = subprocess.run([str(duel), "inspect", str(tmp_path / "again.genome")], capture_output=True, text=True,
                        check=True)
     assert "genome" in r.stdout
+
+
+def test_champion_keeps_its_origin(tmp_path: pathlib.Path) -> None:
+    """Issue 49: a propagate champion of another world, copied out of its run, is still a propagate network of that
+    world here, and saved again gives the same bytes (genome file format 2)."""
+    duel = program("DUEL_EVOLVE")
+    out = tmp_path / "run"
+    subprocess.run([str(duel), "run", "--config", str(ROOT / "tests" / "tools" / "coev-small.ini"), "--out", str(out),
+                    "--generations", "2", "--set", "net_step=propagate", "--set", "world.food_range=300", "--quiet"],
+                   check=True)
+    copy = tmp_path / "copy.genome"
+    copy.write_bytes((out / "champions" / "gen-00001.genome").read_bytes())
+    g = nd.Genome.load(copy)
+    cfg = nd.DuelConfig.from_ini(out / "config.ini")
+    assert g.step == "propagate"
+    assert g.world_id == cfg.world_id != nd.DuelConfig().world_id
+    assert g.network().step_mode == "propagate"
+    assert g.network().blob == (out / "champions" / "gen-00001.blob").read_bytes()
+    assert g.to_bytes() == copy.read_bytes()
+    # a genome of a propagate population records its step, not a world
+    p = nd.Params(pop_size=10, n_inputs=2, n_outputs=1, net_step="propagate")
+    pop = nd.Population(p, seed=1)
+    h = nd.Genome.from_bytes(pop.genome(0).to_bytes())
+    assert h.step == "propagate" and h.world_id is None
+    # one of a sync population is written as before origins existed (format 1)
+    s = nd.Population(nd.Params(pop_size=10, n_inputs=2, n_outputs=1), seed=1).genome(0)
+    assert s.to_bytes()[8] == 1 and nd.Genome.from_bytes(s.to_bytes()).step == "sync"

@@ -150,9 +150,9 @@ static void test_every_truncation_and_flip_refused(void **state)
             bad[n] ^= (uint8_t)(1u << bit);
             assert_int_not_equal(neat_genome_load(&back, NULL, NULL, bad, len, NULL, NULL), NEAT_OK);
         }
-    /* with the CRC made right again, the checks behind it: version at 8 */
+    /* with the CRC made right again, the checks behind it: version at 8 (3: no such version) */
     memcpy(bad, buf, len);
-    bad[8] = 2;
+    bad[8] = 3;
     reseal(bad, len);
     off = 0;
     assert_int_equal(neat_genome_load(&back, NULL, NULL, bad, len, NULL, &off), NEAT_E_FORMAT);
@@ -194,12 +194,103 @@ static void test_every_truncation_and_flip_refused(void **state)
     neat_genome_free(&g, NULL);
 }
 
+/* Version 2 records the origin: the step and the run's tag travel with the
+ * genome, round trip exactly, and every cut, flip and bad field is refused at
+ * its offset; version 1 (no origin) is still written and read as before. */
+static void test_origin(void **state)
+{
+    neat_genome g, back;
+    neat_genome_origin o, got;
+    uint8_t tag[300], *buf = NULL, *again = NULL, *v1 = NULL, *v1b = NULL, *bad;
+    size_t len = 0, len2 = 0, l1 = 0, l1b = 0, n, off = 0;
+    uint32_t ni = 0, no = 0, i;
+    (void)state;
+    for (i = 0; i < sizeof tag; i++)
+        tag[i] = (uint8_t)(i * 7u + 1u);
+    evolved_genome(&g);
+    memset(&o, 0, sizeof o);
+    o.net_step = NEAT_STEP_PROPAGATE;
+    o.tag_len = sizeof tag;
+    o.tag = tag;
+    assert_int_equal(neat_genome_save_origin(&g, 3, 2, &o, &buf, &len, NULL), NEAT_OK);
+    assert_int_equal(buf[8], 2);
+    assert_int_equal(neat_genome_load_origin(&back, &ni, &no, &got, buf, len, NULL, &off), NEAT_OK);
+    assert_int_equal(got.version, 2);
+    assert_int_equal(got.net_step, NEAT_STEP_PROPAGATE);
+    assert_int_equal(got.tag_len, sizeof tag);
+    assert_memory_equal(got.tag, tag, sizeof tag);
+    assert_int_equal(ni, 3);
+    assert_int_equal(no, 2);
+    assert_same_genome(&g, &back);
+    assert_int_equal(neat_genome_save_origin(&back, 3, 2, &got, &again, &len2, NULL), NEAT_OK);
+    assert_int_equal(len, len2);
+    assert_memory_equal(buf, again, len);
+    neat_genome_free(&back, NULL);
+    /* neat_genome_load reads a version-2 file too (the origin ignored) */
+    assert_int_equal(neat_genome_load(&back, NULL, NULL, buf, len, NULL, NULL), NEAT_OK);
+    neat_genome_free(&back, NULL);
+    /* version 1: no origin, neat_genome_save's bytes; read as sync with no tag */
+    assert_int_equal(neat_genome_save(&g, 3, 2, &v1, &l1, NULL), NEAT_OK);
+    assert_int_equal(neat_genome_save_origin(&g, 3, 2, NULL, &v1b, &l1b, NULL), NEAT_OK);
+    assert_int_equal(l1, l1b);
+    assert_memory_equal(v1, v1b, l1);
+    assert_int_equal(v1[8], 1);
+    assert_int_equal(len, l1 + 8 + sizeof tag);
+    assert_int_equal(neat_genome_load_origin(&back, NULL, NULL, &got, v1, l1, NULL, NULL), NEAT_OK);
+    assert_int_equal(got.version, 1);
+    assert_int_equal(got.net_step, NEAT_STEP_SYNC);
+    assert_int_equal(got.tag_len, 0);
+    neat_genome_free(&back, NULL);
+    /* what a save refuses: a step that is no mode, a tag too long or missing */
+    o.net_step = 2;
+    assert_int_equal(neat_genome_save_origin(&g, 3, 2, &o, &again, &len2, NULL), NEAT_E_ARG);
+    o.net_step = NEAT_STEP_SYNC;
+    o.tag_len = NEAT_GAME_MAX + 1u;
+    assert_int_equal(neat_genome_save_origin(&g, 3, 2, &o, &again, &len2, NULL), NEAT_E_ARG);
+    o.tag_len = 4;
+    o.tag = NULL;
+    assert_int_equal(neat_genome_save_origin(&g, 3, 2, &o, &again, &len2, NULL), NEAT_E_ARG);
+    /* every cut of the version-2 file is refused */
+    bad = (uint8_t *)malloc(len);
+    assert_non_null(bad);
+    for (n = 0; n < len; n++) {
+        int err;
+        memcpy(bad, buf, n);
+        err = neat_genome_load_origin(&back, NULL, NULL, &got, bad, n, NULL, &off);
+        if (err != NEAT_E_TRUNCATED && err != NEAT_E_FORMAT && err != NEAT_E_CRC)
+            fail_msg("%zu of %zu bytes: error %d", n, len, err);
+        assert_int_equal(back.n_nodes, 0);
+    }
+    /* resealed: a step that is no mode at 20, a tag length beyond the file or NEAT_GAME_MAX at 24 */
+    memcpy(bad, buf, len);
+    bad[20] = 2;
+    reseal(bad, len);
+    assert_int_equal(neat_genome_load_origin(&back, NULL, NULL, &got, bad, len, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 20);
+    memcpy(bad, buf, len);
+    bad[24] = 0x01, bad[25] = 0x10, bad[26] = bad[27] = 0; /* 4097 */
+    reseal(bad, len);
+    assert_int_equal(neat_genome_load_origin(&back, NULL, NULL, &got, bad, len, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 24);
+    memset(bad + 24, 0xFF, 4);
+    reseal(bad, len);
+    assert_int_equal(neat_genome_load_origin(&back, NULL, NULL, &got, bad, len, NULL, &off), NEAT_E_FORMAT);
+    assert_int_equal(off, 24);
+    free(bad);
+    free(buf);
+    free(again);
+    free(v1);
+    free(v1b);
+    neat_genome_free(&g, NULL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_round_trip),
         cmocka_unit_test(test_wrong_shape_refused_on_save),
         cmocka_unit_test(test_every_truncation_and_flip_refused),
+        cmocka_unit_test(test_origin),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

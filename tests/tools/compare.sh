@@ -21,7 +21,7 @@ python3 -c 'import json,sys; d=json.load(open("a.json")); assert d["runs"] == 3 
 
 # every comparison is what play --games 288 gives, one by one
 n=0
-while IFS=, read -r cand _ cgen rank levels _ _ _ _ _ _ wins; do
+while IFS=, read -r cand _ cgen rank levels _ _ _ _ _ _ wins _; do
   read -ra wl <<< "$wins"
   [ "${#wl[@]}" -eq "$levels" ] || fail "$cand vs $rank: ${#wl[@]} results for $levels levels"
   k=0

@@ -141,12 +141,12 @@ ladder)
   "$duel" ladder "$tmp/l" > "$tmp/ladder.txt"
   levels=$(($(wc -l < "$tmp/l/dominance.csv") - 1))
   [ "$(($(wc -l < "$tmp/l/ladder.csv") - 1))" -eq "$levels" ] || { echo "ladder.csv: not one row per dominant"; exit 1; }
-  head -1 "$tmp/l/ladder.csv" | grep -q "^level,generation,population,hidden,connections,idle_wins,idle_losses,.*forager-hunter_losses,total_wins,total_losses$" ||
+  head -1 "$tmp/l/ladder.csv" | grep -q "^level,generation,population,hidden,connections,idle_wins,idle_losses,.*forager-hunter_losses,total_wins,total_losses,world,step$" ||
     { echo "ladder.csv header: $(head -1 "$tmp/l/ladder.csv")"; exit 1; }
   # each row: wins and losses of 288 games per built-in, the totals their sums
   tail -n +2 "$tmp/l/ladder.csv" | awk -F, '{ w = 0; l = 0
       for (i = 6; i < 16; i += 2) { if ($i + $(i + 1) > 288) exit 1; w += $i; l += $(i + 1) }
-      if (w != $16 || l != $17 || NF != 17) exit 1 }' || { echo "ladder.csv rows do not add up"; exit 1; }
+      if (w != $16 || l != $17 || NF != 19 || $18 != "v1" || $19 != "sync") exit 1 }' || { echo "ladder.csv rows do not add up"; exit 1; }
   # the ladder's numbers are play's numbers
   gen=$(sed -n 2p "$tmp/l/ladder.csv" | cut -d, -f2)
   "$duel" play "$tmp/l/champions/gen-$(printf %05d "$gen").blob" builtin:forager --games 288 > "$tmp/play.txt"
@@ -180,7 +180,7 @@ for name in ("forager", "idle"):
 assert lv["total_wins"] == sum(lv["results"][n]["wins"] for n in ("forager", "idle"))
 PY
   "$duel" ladder "$tmp/l" --levels 1 --against idle --csv "$tmp/part.csv" > /dev/null
-  head -1 "$tmp/part.csv" | grep -qx "level,generation,population,hidden,connections,idle_wins,idle_losses,total_wins,total_losses" ||
+  head -1 "$tmp/part.csv" | grep -qx "level,generation,population,hidden,connections,idle_wins,idle_losses,total_wins,total_losses,world,step" ||
     fail "ladder --csv: $(head -1 "$tmp/part.csv")"
   expect_bad "has $levels dominance level" ladder "$tmp/l" --levels "1-$((levels + 1))"
   expect_bad "--against takes built-in strategies" ladder "$tmp/l" --against idle,nobody

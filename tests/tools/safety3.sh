@@ -283,6 +283,93 @@ edits)
   "$duel" resume "$tmp/old" --generations 4 --quiet || fail "a config.ini without a seal"
   cmp -s "$tmp/old/checkpoint.bin" "$tmp/plain/checkpoint.bin" || fail "an unsealed run went on differently"
   ;;
+provenance)
+  # §1: a champion copied out of its run keeps its world and step (genome file format 2); every result names them
+  fixture=$(cd "$(dirname "$0")/fixtures/experiment-tiny" && pwd)
+  "$duel" run --config "$cfg" --out "$tmp/p" --generations 3 --set net_step=propagate --set world.food_range=300 --quiet
+  "$duel" run --config "$cfg" --out "$tmp/p2" --generations 3 --seed 8 --set net_step=propagate \
+    --set world.food_range=300 --quiet
+  "$duel" run --config "$cfg" --out "$tmp/v1" --generations 2 --quiet
+  id=$("$duel" play "$tmp/p/champions/gen-00002.genome" builtin:idle --json | sed 's/.*"world_id":"\([0-9a-f]*\)".*/\1/')
+  [ "${#id}" -eq 16 ] && [ "$id" != "$("$duel" play builtin:idle builtin:idle --json | sed 's/.*"world_id":"\([0-9a-f]*\)".*/\1/')" ] ||
+    fail "the run's world: '$id'"
+  cp "$tmp/p/champions/gen-00002.genome" "$tmp/out.genome"
+  cp "$tmp/p/champions/gen-00002.blob" "$tmp/out.blob"
+  # the genome file records its step and world: played out of the run as in it
+  "$duel" play "$tmp/p/champions/gen-00002.genome" builtin:forager-hunter --games 288 --json > "$tmp/in.json"
+  "$duel" play "$tmp/out.genome" builtin:forager-hunter --games 288 --json > "$tmp/out.json"
+  grep -q "\"world_id\":\"$id\",\"world_from\":\"champions\",\"step\":{\"a\":\"propagate\",\"b\":\"builtin\"}" \
+    "$tmp/out.json" || fail "the copied genome: $(cat "$tmp/out.json")"
+  [ "$(sed 's/"a":"[^"]*",//' "$tmp/in.json")" = "$(sed 's/"a":"[^"]*",//' "$tmp/out.json")" ] ||
+    fail "copied out, the champion plays otherwise: $(cat "$tmp/in.json" "$tmp/out.json")"
+  "$duel" play "$tmp/out.genome" builtin:idle | grep -q "^world custom (identity $id); network step: A propagate, B builtin$" ||
+    fail "play's text does not name the world and step: $("$duel" play "$tmp/out.genome" builtin:idle | tail -1)"
+  # its firmware blob is a propagate one (format 2), and the export says the world
+  "$duel" export "$tmp/out.genome" --c-array champ > "$tmp/champ.c"
+  grep -q "format version 2" "$tmp/champ.c" && grep -q "Evolved in world custom $id (identity $id)" "$tmp/champ.c" ||
+    fail "export of the copied genome: $(head -7 "$tmp/champ.c")"
+  # render plays it in its own world and step too, and says so
+  "$duel" render "$tmp/out.genome" builtin:idle --out "$tmp/frames" --every 300 > "$tmp/render.txt"
+  grep -qx "world custom (identity $id); network step: west propagate, east builtin" "$tmp/render.txt" ||
+    fail "render: $(cat "$tmp/render.txt")"
+  # a blob records its step, not its world: play says plainly what it does
+  "$duel" play "$tmp/out.blob" builtin:idle --json | grep -q '"world":"v1",.*"world_from":"default","step":{"west":"propagate"' ||
+    fail "a blob out of its run: $("$duel" play "$tmp/out.blob" builtin:idle --json)"
+  "$duel" play "$tmp/out.blob" builtin:idle 2> "$tmp/note" | grep -q "^world v1 (identity [0-9a-f]*); network step: A propagate, B builtin$" ||
+    fail "play's text for a blob out of its run"
+  grep -qx "duel_evolve: play: note: A (.*out.blob) records no world (a blob never does; its run's genome file does): played in world v1, the default (--world chooses another)" "$tmp/note" ||
+    fail "no note for a blob out of its run: $(cat "$tmp/note")"
+  # a genome file of format 1 (no origin) out of any run: sync, and said so
+  python3 - "$tmp/out.genome" "$tmp/old.genome" <<'PY'
+import struct, sys, zlib
+b = open(sys.argv[1], "rb").read()
+assert b[8] == 2
+tag = struct.unpack_from("<I", b, 24)[0]
+body = b[:8] + struct.pack("<I", 1) + b[12:20] + b[28 + tag:-4]
+open(sys.argv[2], "wb").write(body + struct.pack("<I", zlib.crc32(body) & 0xFFFFFFFF))
+PY
+  "$duel" play "$tmp/old.genome" builtin:idle --json | grep -q '"world_from":"default","step":{"west":"sync"' ||
+    fail "a format-1 genome file: $("$duel" play "$tmp/old.genome" builtin:idle --json)"
+  # champions of two worlds are not played in one without --world; with it, a note says so
+  expect_bad "out.genome is of world custom $id, .*gen-00001.genome of world v1: give --world" \
+    play "$tmp/out.genome" "$tmp/v1/champions/gen-00001.genome"
+  "$duel" play "$tmp/out.genome" "$tmp/v1/champions/gen-00001.genome" --world v1 > /dev/null 2> "$tmp/note" ||
+    fail "--world v1"
+  grep -q "note: A (.*out.genome) was made in world custom $id; played in world v1 as --world asks" "$tmp/note" ||
+    fail "no note: $(cat "$tmp/note")"
+  # an opponent made in another world is refused before any game
+  printf '[opponents]\nplay = %s\n' "$tmp/out.genome" > "$tmp/o.ini"
+  expect_bad "\[opponents\] .*out.genome: made in world custom $id, but this run plays in world v1" \
+    run --config "$cfg" --config "$tmp/o.ini" --out "$tmp/never"
+  [ ! -e "$tmp/never/generations.csv" ] || fail "games were played"
+  # ladder and compare name the world and the step in every row
+  "$duel" ladder "$tmp/p" --against idle --csv "$tmp/l.csv" > /dev/null
+  head -1 "$tmp/l.csv" | grep -qx "level,generation,population,hidden,connections,idle_wins,idle_losses,total_wins,total_losses,world,step" ||
+    fail "ladder.csv header: $(head -1 "$tmp/l.csv")"
+  [ "$(tail -n +2 "$tmp/l.csv" | grep -cv ",custom $id,propagate$")" -eq 0 ] || fail "ladder.csv rows: $(cat "$tmp/l.csv")"
+  "$duel" compare "$tmp/p" --against "$tmp/p2" --csv "$tmp/c.csv" --json "$tmp/c.json" > "$tmp/c.txt"
+  head -1 "$tmp/c.csv" | grep -q ",wins,world,candidate_step,ranking_step$" || fail "compare.csv: $(head -1 "$tmp/c.csv")"
+  tail -1 "$tmp/c.csv" | grep -q ",custom $id,propagate,propagate$" || fail "compare.csv row: $(tail -1 "$tmp/c.csv")"
+  grep -q "\"world_id\": \"$id\"" "$tmp/c.json" && grep -q '"step": "propagate"' "$tmp/c.json" || fail "compare --json"
+  grep -q "world custom $id$" "$tmp/c.txt" || fail "compare's text: $(head -1 "$tmp/c.txt")"
+  # an experiment's report names them, and refuses runs of several worlds
+  cp -r "$fixture" "$tmp/x"
+  "$duel" experiment report "$tmp/x" > /dev/null 2>&1 || fail "report of the fixture"
+  head -1 "$tmp/x/report/runs.csv" | grep -q ",world,step$" && grep -q ",v1,sync$" "$tmp/x/report/table1.csv" &&
+    grep -q ",v1,sync$" "$tmp/x/report/ladder.csv" && grep -q "in world v1 (identity" "$tmp/x/report/table1.md" ||
+    fail "the report does not name world and step"
+  rm -r "$tmp/x/report"
+  cp -r "$tmp/x" "$tmp/x2"
+  # a run's world is its checkpoint's: one put there from a run of another world is refused before any file
+  cp "$tmp/p/checkpoint.bin" "$tmp/x/runs/random-1/checkpoint.bin"
+  expect_bad "experiment: .*: runs of several worlds: runs/[a-z0-9-]* is of world v1, runs/random-1 of world custom $id" \
+    experiment report "$tmp/x"
+  [ ! -e "$tmp/x/report" ] || fail "a report of several worlds was written"
+  # its config.ini's [world] edited: the run is not the plan's
+  printf '[world]\nfood_range = 300\n' >> "$tmp/x2/runs/random-1/config.ini"
+  expect_bad "experiment: .*random-1/config.ini belongs to another plan" experiment report "$tmp/x2"
+  [ ! -e "$tmp/x2/report" ] || fail "a report of several worlds was written"
+  ;;
 *)
   fail "unknown check $what"
   ;;

@@ -17,6 +17,7 @@
 #include "duel_outputs.h"
 #include "duel_perf.h"
 #include "duel_text.h"
+#include "duel_world_cfg.h"
 
 typedef struct duel_cmp_stats {
     double mean, sd;
@@ -41,9 +42,11 @@ static void duel_cmp_write_csv(FILE *f, const void *ctx)
 {
     const duel_perf *m = (const duel_perf *)ctx;
     uint32_t k, l;
+    char w[40];
+    duel_world_label(&m->world, w, sizeof w);
     fprintf(f, "candidate,candidate_level,candidate_generation,ranking,ranking_levels,highest_level,"
                "highest_generation,highest_performance,contiguous_level,contiguous_generation,contiguous_performance,"
-               "wins\n");
+               "wins,world,candidate_step,ranking_step\n");
     for (k = 0; k < m->n_pairs; k++) {
         const duel_perf_pair *p = &m->pairs[k];
         const duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
@@ -55,7 +58,7 @@ static void duel_cmp_write_csv(FILE *f, const void *ctx)
                 duel_perf_gen(m, p, p->contiguous), duel_perf_level_share(m, p, p->contiguous));
         for (l = 0; l < r->n_levels; l++)
             fprintf(f, "%s%u:%u", l ? " " : "", p->t[l].wins_a, p->t[l].wins_b);
-        fputc('\n', f);
+        fprintf(f, ",%s,%s,%s\n", w, duel_step_name(c->net_step), duel_step_name(r->net_step));
     }
 }
 
@@ -72,7 +75,10 @@ static void duel_cmp_write_json(FILE *f, const void *ctx)
 {
     const duel_perf *m = (const duel_perf *)ctx;
     uint32_t i, k, l, at = 0;
-    fprintf(f, "{\n  \"games_per_comparison\": %d,\n  \"runs\": %u,\n  \"summary\": {", 2 * DUEL_CONFIGS, m->n_cand);
+    char w[40];
+    fprintf(f, "{\n  \"games_per_comparison\": %d,\n  \"world\": \"%s\",\n  \"world_id\": \"%016llx\",\n  \"runs\": %u,\n  "
+               "\"summary\": {", 2 * DUEL_CONFIGS, duel_world_label(&m->world, w, sizeof w),
+            (unsigned long long)duel_rules_id(&m->world), m->n_cand);
     duel_cmp_json_stats(f, "highest", m->perf_hi, m->gen_hi, m->n_cand, m->pair_hi, m->n_pairs);
     fprintf(f, ", ");
     duel_cmp_json_stats(f, "contiguous", m->perf_co, m->gen_co, m->n_cand, m->pair_co, m->n_pairs);
@@ -83,9 +89,11 @@ static void duel_cmp_write_json(FILE *f, const void *ctx)
         duel_json_str(f, c->dir);
         fprintf(f, ", \"levels\": %u, \"generation\": %u, \"hidden\": %u, \"connections\": %u, "
                    "\"highest\": {\"performance\": %.6f, \"equivalent_generation\": %.3f}, "
-                   "\"contiguous\": {\"performance\": %.6f, \"equivalent_generation\": %.3f}, \"rankings\": [\n",
+                   "\"contiguous\": {\"performance\": %.6f, \"equivalent_generation\": %.3f}, \"step\": \"%s\", "
+                   "\"rankings\": [\n",
                 c->n_levels, c->levels[c->n_levels - 1].generation, c->levels[c->n_levels - 1].hidden,
-                c->levels[c->n_levels - 1].conns, m->perf_hi[i], m->gen_hi[i], m->perf_co[i], m->gen_co[i]);
+                c->levels[c->n_levels - 1].conns, m->perf_hi[i], m->gen_hi[i], m->perf_co[i], m->gen_co[i],
+                duel_step_name(c->net_step));
         for (k = 0; at < m->n_pairs && m->pairs[at].cand == i; at++, k++) {
             const duel_perf_pair *p = &m->pairs[at];
             const duel_perf_run *r = &m->runs[p->rank];
@@ -113,13 +121,14 @@ static void duel_cmp_print(const duel_perf *m)
                    gh = duel_cmp_stat(m->gen_hi, m->n_cand), gc = duel_cmp_stat(m->gen_co, m->n_cand);
     size_t w = 14;
     uint32_t i;
+    char wl[40];
     for (i = 0; i < m->n_cand; i++)
         if (strlen(m->runs[i].dir) > w)
             w = strlen(m->runs[i].dir);
     printf("%u run%s against the dominance rankings of %u run%s (never its own): %u pairs, %zu comparisons of %d "
-           "games (%zu played, %zu from the cache)\n",
+           "games (%zu played, %zu from the cache), world %s\n",
            m->n_cand, m->n_cand == 1 ? "" : "s", m->n_rank, m->n_rank == 1 ? "" : "s", m->n_pairs, m->played + m->cached,
-           2 * DUEL_CONFIGS, m->played, m->cached);
+           2 * DUEL_CONFIGS, m->played, m->cached, duel_world_label(&m->world, wl, sizeof wl));
     printf("%-*s  %6s %6s   %-24s   %-24s\n", (int)w, "", "top", "top", "highest level defeated",
            "every level up to");
     printf("%-*s  %6s %6s   %11s %12s   %11s %12s\n", (int)w, "run", "level", "gen", "performance", "equiv. gen",

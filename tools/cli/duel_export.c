@@ -22,6 +22,7 @@ typedef struct duel_export {
     size_t mem_required;
     nrt_net net;
     const char *header;  /* --header FILE.h: the file the .c includes, or NULL */
+    duel_origin origin;  /* the world and step it was made with, as far as known */
 } duel_export;
 
 static void duel_export_usage(void)
@@ -97,7 +98,7 @@ static int duel_export_open(duel_export *x, const char *path)
     int err;
 
     x->path = path;
-    if (duel_cli_read_blob(path, &x->blob, &x->len) != 0)
+    if (duel_cli_read_blob_origin(path, &x->blob, &x->len, &x->origin) != 0)
         return -1;
     err = nrt_mem_required(x->blob, x->len, &x->mem_required);
     if (!err) {
@@ -197,6 +198,16 @@ static void duel_export_write(FILE *f, const duel_export *x)
             (unsigned)x->net.n_inputs, (unsigned)x->net.n_outputs, (unsigned)x->net.n_hidden, (unsigned)x->net.n_conns,
             x->blob[NRT_OFF_VERSION] >= NRT_FORMAT_VERSION_PROPAGATE ? ", stepped by propagation" : "",
             (unsigned long)x->mem_required);
+    /* where it was made (issue 49): the blob itself records its step, not its world */
+    if (x->origin.world_from != DUEL_ORIGIN_NONE) {
+        char w[40];
+        fprintf(f, "/* Evolved in world %s (identity %016llx): play it in that world's rules (export --world %s). */\n",
+                duel_world_label(&x->origin.world, w, sizeof w), (unsigned long long)duel_rules_id(&x->origin.world),
+                duel_rules_name(&x->origin.world) != NULL ? w : "FILE");
+    } else {
+        fprintf(f, "/* The file it was exported from records no world (a blob, or a genome file of format 1, outside "
+                   "any run). */\n");
+    }
     if (x->header != NULL) {
         /* the header's declarations, checked against these definitions by the compiler */
         fprintf(f, "#include \"");

@@ -143,15 +143,19 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
     return 0;
 }
 
-/* The CSV: level, generation, population, hidden, connections, NAME_wins, NAME_losses per strategy, totals. */
+/* The CSV: level, generation, population, hidden, connections, NAME_wins, NAME_losses per strategy, totals,
+ * then the world the games were played in and the dominant's network step (issue 49: a file that leaves its run
+ * still says what it was measured in). */
 static void duel_ladder_csv(FILE *f, const duel_ladder_opts *o, const duel_level *lv, uint32_t first, uint32_t end,
                             const duel_pair *pairs)
 {
     uint32_t k, b;
+    char w[40];
+    duel_world_label(&o->world, w, sizeof w);
     fprintf(f, "level,generation,population,hidden,connections");
     for (b = 0; b < o->n_against; b++)
         fprintf(f, ",%s_wins,%s_losses", duel_builtin_name(o->against[b]), duel_builtin_name(o->against[b]));
-    fprintf(f, ",total_wins,total_losses\n");
+    fprintf(f, ",total_wins,total_losses,world,step\n");
     for (k = first; k < end; k++) {
         uint32_t tw = 0, tl = 0;
         fprintf(f, "%u,%u,%s,%u,%u", lv[k].level, lv[k].generation, lv[k].pop, lv[k].hidden, lv[k].conns);
@@ -161,7 +165,7 @@ static void duel_ladder_csv(FILE *f, const duel_ladder_opts *o, const duel_level
             tw += t->wins_a;
             tl += t->wins_b;
         }
-        fprintf(f, ",%u,%u\n", tw, tl);
+        fprintf(f, ",%u,%u,%s,%s\n", tw, tl, w, duel_origin_step_text(&lv[k].ctrl.origin));
     }
 }
 
@@ -186,8 +190,9 @@ static void duel_ladder_table(const duel_ladder_opts *o, const duel_level *lv, u
     }
     {
         char w[40];
-        printf("wins:losses of %u games against each built-in strategy (draws and timeouts are neither), world %s\n",
-               2u * DUEL_CONFIGS, duel_world_label(&o->world, w, sizeof w));
+        printf("wins:losses of %u games against each built-in strategy (draws and timeouts are neither), world %s, "
+               "network step %s\n", 2u * DUEL_CONFIGS, duel_world_label(&o->world, w, sizeof w),
+               end > first ? duel_origin_step_text(&lv[first].ctrl.origin) : "none");
     }
 }
 
@@ -199,8 +204,9 @@ static void duel_ladder_json(const duel_ladder_opts *o, const duel_level *lv, ui
     char w[40];
     printf("{\"run\":");
     duel_json_str(stdout, o->dir);
-    printf(",\"world\":\"%s\",\"world_id\":\"%016llx\",\"games\":%u,\"against\":[",
-           duel_world_label(&o->world, w, sizeof w), (unsigned long long)duel_rules_id(&o->world), 2u * DUEL_CONFIGS);
+    printf(",\"world\":\"%s\",\"world_id\":\"%016llx\",\"step\":\"%s\",\"games\":%u,\"against\":[",
+           duel_world_label(&o->world, w, sizeof w), (unsigned long long)duel_rules_id(&o->world),
+           end > first ? duel_origin_step_text(&lv[first].ctrl.origin) : "none", 2u * DUEL_CONFIGS);
     for (b = 0; b < o->n_against; b++)
         printf("%s\"%s\"", b ? "," : "", duel_builtin_name(o->against[b]));
     printf("],\"levels\":[");

@@ -31,9 +31,39 @@ static const char *duel_outcome_key(int outcome)
     }
 }
 
-/* One game as one JSON object on stdout. */
-static void duel_play_json_game(const char *west, const char *east, int food, const duel_result *r)
+/* What the game was played in: its world, where that came from, and each side's step. */
+typedef struct duel_play_ctx {
+    const duel_rules *world;
+    const char *world_from; /* "--world", "champions" or "default" */
+} duel_play_ctx;
+
+/* The world and the step modes as the end of a JSON object: ,"world":...} */
+static void duel_play_json_world(const duel_play_ctx *x, const char *ka, const duel_cli_ctrl *a, const char *kb,
+                                 const duel_cli_ctrl *b)
 {
+    char label[40];
+    printf(",\"world\":");
+    duel_json_str(stdout, duel_world_label(x->world, label, sizeof label));
+    printf(",\"world_id\":\"%016llx\",\"world_from\":\"%s\",\"step\":{\"%s\":\"%s\",\"%s\":\"%s\"}}\n",
+           (unsigned long long)duel_rules_id(x->world), x->world_from, ka, duel_origin_step_text(&a->origin), kb,
+           duel_origin_step_text(&b->origin));
+}
+
+/* The same as a line of text (where the world came from: --json's world_from, and a note on stderr when it is
+ * the default for lack of a recorded one). */
+static void duel_play_text_world(const duel_play_ctx *x, const duel_cli_ctrl *a, const duel_cli_ctrl *b)
+{
+    const char *name = duel_rules_name(x->world);
+    printf("world %s (identity %016llx); network step: A %s, B %s\n", name != NULL ? name : "custom",
+           (unsigned long long)duel_rules_id(x->world), duel_origin_step_text(&a->origin),
+           duel_origin_step_text(&b->origin));
+}
+
+/* One game as one JSON object on stdout. */
+static void duel_play_json_game(const duel_play_ctx *x, const duel_cli_ctrl *w, const duel_cli_ctrl *e, int food,
+                                const duel_result *r)
+{
+    const char *west = w->name, *east = e->name;
     printf("{\"games\":1,\"food\":");
     if (food < 0)
         printf("\"training\"");
@@ -43,21 +73,44 @@ static void duel_play_json_game(const char *west, const char *east, int food, co
     duel_json_str(stdout, west);
     printf(",\"east\":");
     duel_json_str(stdout, east);
-    printf(",\"outcome\":\"%s\",\"steps\":%u,\"energy\":[%.6f,%.6f],\"eaten\":[%u,%u]}\n",
+    printf(",\"outcome\":\"%s\",\"steps\":%u,\"energy\":[%.6f,%.6f],\"eaten\":[%u,%u]",
            duel_outcome_key(r->outcome), (unsigned)r->steps, r->energy[0] / 65536.0, r->energy[1] / 65536.0,
            (unsigned)r->eaten[0], (unsigned)r->eaten[1]);
+    duel_play_json_world(x, "west", w, "east", e);
 }
 
 /* A 288-game comparison as one JSON object on stdout. */
-static void duel_play_json_tally(const char *a, const char *b, const duel_tally *t)
+static void duel_play_json_tally(const duel_play_ctx *x, const duel_cli_ctrl *ca, const duel_cli_ctrl *cb,
+                                 const duel_tally *t)
 {
+    const char *a = ca->name, *b = cb->name;
     printf("{\"games\":%u,\"a\":", 2u * DUEL_CONFIGS);
     duel_json_str(stdout, a);
     printf(",\"b\":");
     duel_json_str(stdout, b);
-    printf(",\"a_wins\":%u,\"b_wins\":%u,\"draws\":%u,\"timeouts\":%u,\"superior\":%s}\n", t->wins_a,
+    printf(",\"a_wins\":%u,\"b_wins\":%u,\"draws\":%u,\"timeouts\":%u,\"superior\":%s", t->wins_a,
            t->wins_b, t->draws, t->timeouts,
            t->wins_a > t->wins_b ? "\"a\"" : (t->wins_b > t->wins_a ? "\"b\"" : "null"));
+    duel_play_json_world(x, "a", ca, "b", cb);
+}
+
+/* A champion played in another world than its own (--world asks for it), or in the default world because it
+ * records none (a blob never does), is said so, once, on stderr. */
+static void duel_play_note_world(const duel_cli_ctrl *c, const char *which, const duel_rules *world)
+{
+    char a[40], b[40];
+    if (c->origin.world_from != DUEL_ORIGIN_NONE && !duel_rules_equal(&c->origin.world, world))
+        fprintf(stderr, "duel_evolve: play: note: %s (%s) was made in world %s; played in world %s as --world asks\n",
+                which, c->name, duel_world_label(&c->origin.world, a, sizeof a), duel_world_label(world, b, sizeof b));
+}
+
+static void duel_play_note_default(const duel_cli_ctrl *c, const char *which)
+{
+    if (!c->origin.builtin && c->origin.world_from == DUEL_ORIGIN_NONE)
+        fprintf(stderr, "duel_evolve: play: note: %s (%s) records no world (%s): played in world v1, the default "
+                        "(--world chooses another)\n", which, c->name,
+                c->origin.genome ? "a genome file of format 1 outside any run" : "a blob never does; its run's "
+                                                                                 "genome file does");
 }
 
 int duel_cmd_play(int argc, char **argv)
@@ -65,6 +118,7 @@ int duel_cmd_play(int argc, char **argv)
     duel_cli_ctrl a, b;
     const char *trace_path = NULL, *lcm_path = NULL, *world_arg = NULL;
     duel_rules world = *duel_rules_v1();
+    duel_play_ctx x;
     int i, food = DUEL_TRAINING, a_west = 1, games = 1, rc = 0, err, json = 0, found = 0, force = 0;
 
     if (argc < 2) {
@@ -151,6 +205,15 @@ int duel_cmd_play(int argc, char **argv)
         duel_cli_ctrl_close(&a);
         return 2;
     }
+    x.world = &world;
+    x.world_from = world_arg != NULL ? "--world" : found ? "champions" : "default";
+    if (world_arg != NULL) {
+        duel_play_note_world(&a, "A", &world);
+        duel_play_note_world(&b, "B", &world);
+    } else if (!found) {
+        duel_play_note_default(&a, "A");
+        duel_play_note_default(&b, "B");
+    }
     if (games == 288) {
         duel_tally t;
         err = duel_compare_rules(&world, &a.ctrl, &b.ctrl, &t);
@@ -158,11 +221,12 @@ int duel_cmd_play(int argc, char **argv)
             fprintf(stderr, "duel_evolve: play: comparison failed (%d)\n", err);
             rc = 1;
         } else if (json) {
-            duel_play_json_tally(a.name, b.name, &t);
+            duel_play_json_tally(&x, &a, &b, &t);
         } else {
             printf("288 games (144 food configurations x 2 sides): A %s wins %u, B %s wins %u, draws %u, timeouts %u\n",
                    a.name, t.wins_a, b.name, t.wins_b, t.draws, t.timeouts);
             printf("%s\n", t.wins_a > t.wins_b ? "A is superior" : (t.wins_b > t.wins_a ? "B is superior" : "neither is superior"));
+            duel_play_text_world(&x, &a, &b);
         }
     } else {
         duel_result r;
@@ -217,7 +281,7 @@ int duel_cmd_play(int argc, char **argv)
             fprintf(stderr, "duel_evolve: play: game failed (%d)\n", err);
             rc = 1;
         } else if (json) {
-            duel_play_json_game(a_west ? a.name : b.name, a_west ? b.name : a.name, food, &r);
+            duel_play_json_game(&x, a_west ? &a : &b, a_west ? &b : &a, food, &r);
         } else {
             const char *wname = a_west ? a.name : b.name, *ename = a_west ? b.name : a.name;
             if (food < 0)
@@ -227,6 +291,7 @@ int duel_cmd_play(int argc, char **argv)
             printf("%s after %u steps\n", duel_outcome_text(r.outcome), (unsigned)r.steps);
             printf("energy: west %.6f, east %.6f; food eaten: west %u, east %u\n", r.energy[0] / 65536.0,
                    r.energy[1] / 65536.0, (unsigned)r.eaten[0], (unsigned)r.eaten[1]);
+            duel_play_text_world(&x, &a, &b);
         }
     }
     duel_cli_ctrl_close(&a);

@@ -274,7 +274,7 @@ static int duel_rc_read_log(duel_replay *rep, const char *path)
 
 /* The game between the controllers specs a and b, a starting west or east. */
 static int duel_rc_play(duel_replay *rep, const duel_rules *world, const char *a_spec, const char *b_spec, int food,
-                        int a_west)
+                        int a_west, char step_w[16], char step_e[16])
 {
     duel_cli_ctrl a, b;
     int err;
@@ -288,6 +288,8 @@ static int duel_rc_play(duel_replay *rep, const duel_rules *world, const char *a
                  : duel_replay_from_game_rules(rep, world, &b.ctrl, &a.ctrl, food);
     snprintf(rep->west, sizeof rep->west, "%s", a_west ? a.name : b.name);
     snprintf(rep->east, sizeof rep->east, "%s", a_west ? b.name : a.name);
+    snprintf(step_w, 16, "%s", duel_origin_step_text(a_west ? &a.origin : &b.origin));
+    snprintf(step_e, 16, "%s", duel_origin_step_text(a_west ? &b.origin : &a.origin));
     duel_cli_ctrl_close(&a);
     duel_cli_ctrl_close(&b);
     if (err) {
@@ -374,6 +376,7 @@ int duel_cmd_render(int argc, char **argv)
 {
     const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL, *world_arg = NULL;
     duel_rules world = *duel_rules_v1();
+    char step_w[16] = "", step_e[16] = "";
     int found = 0;
     char video_target[DUEL_RC_PATH];
     char ffmpeg[DUEL_RC_PATH], path[DUEL_RC_PATH], err[512], suffix[64];
@@ -482,7 +485,7 @@ int duel_cmd_render(int argc, char **argv)
     }
     /* the game, then the directory: bad input leaves nothing behind */
     duel_replay_init(&rep);
-    if (n_pos == 1 ? duel_rc_read_log(&rep, pos[0]) : duel_rc_play(&rep, &world, pos[0], pos[1], food, a_west)) {
+    if (n_pos == 1 ? duel_rc_read_log(&rep, pos[0]) : duel_rc_play(&rep, &world, pos[0], pos[1], food, a_west, step_w, step_e)) {
         duel_replay_free(&rep);
         return 2;
     }
@@ -569,6 +572,12 @@ int duel_cmd_render(int argc, char **argv)
             printf("food configuration %d, west %s, east %s: ", rep.food_config, duel_text_escape(rep.west, esc_w, sizeof esc_w),
                    duel_text_escape(rep.east, esc_e, sizeof esc_e));
         printf("%s after %u steps\n", duel_outcome_text(last->ev.outcome), (unsigned)last->t);
+        /* what it was played in (issue 49): the world, and each side's network step when it was played here */
+        printf("world %s (identity %016llx)", duel_rules_name(&rep.rules) != NULL ? duel_rules_name(&rep.rules) : "custom",
+               (unsigned long long)duel_rules_id(&rep.rules));
+        if (n_pos == 2)
+            printf("; network step: west %s, east %s", step_w, step_e);
+        printf("\n");
         if (every == 1)
             printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every step and the final state)\n",
                    n_out, size, size, dir, n_out - 1);

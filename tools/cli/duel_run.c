@@ -209,6 +209,20 @@ static int duel_write_blob(const char *path, const neat_genome *g, const neat_pa
 
 static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ);
 
+/* A champion genome file's origin: the run's step and game tag (world rules
+ * first; the coevolution's, or the population's for a run against fixed
+ * opponents), so that the file says where it was made once copied out. */
+static const neat_genome_origin *duel_origin_of(neat_genome_origin *o, const neat_params *np, const neat_coev *c,
+                                                const neat_pop *pop)
+{
+    size_t len = 0;
+    o->version = 2;
+    o->net_step = np->net_step;
+    o->tag = c != NULL ? neat_coev_game(c, &len) : neat_pop_game(pop, &len);
+    o->tag_len = (uint32_t)len;
+    return o;
+}
+
 static const char *duel_pop_name(uint32_t p)
 {
     return p == 0 ? "A" : "B";
@@ -218,6 +232,7 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
 {
     char path[4200], row[2000];
     const neat_params *np = neat_pop_params(neat_coev_pop(R->coev, 0));
+    neat_genome_origin origin;
     uint32_t p;
     struct stat st;
 
@@ -228,7 +243,8 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
     /* and its genes: a champion to seed a run with (start = genome:PATH) */
     snprintf(row, sizeof row, "champions/gen-%05u.genome", rep->generation);
     duel_path(path, sizeof path, R->dir, row);
-    if (duel_genome_write(path, neat_coev_champion(R->coev), np->n_inputs, np->n_outputs) != 0)
+    if (duel_genome_write(path, neat_coev_champion(R->coev), np->n_inputs, np->n_outputs,
+                          duel_origin_of(&origin, np, R->coev, NULL)) != 0)
         return -1;
     if (R->record_games &&
         duel_lcm_record_champion_games(R->dir, rep->generation, rep->champion_pop, neat_coev_champion(R->coev),
@@ -467,6 +483,7 @@ static void duel_opp_label(const duel_run *R, uint32_t k, char *buf, size_t cap)
 static int duel_record_fixed(duel_run *R, const duel_fixed_report *rep, double secs)
 {
     char path[4200], row[4000], label[32];
+    neat_genome_origin origin;
     neat_pop *pop = duel_fixed_pop(R->fixed);
     const neat_params *np = neat_pop_params(pop);
     const neat_genome *champ = neat_pop_last_best(pop);
@@ -480,7 +497,8 @@ static int duel_record_fixed(duel_run *R, const duel_fixed_report *rep, double s
         return -1;
     snprintf(row, sizeof row, "champions/gen-%05u.genome", rep->generation);
     duel_path(path, sizeof path, R->dir, row);
-    if (duel_genome_write(path, champ, np->n_inputs, np->n_outputs) != 0)
+    if (duel_genome_write(path, champ, np->n_inputs, np->n_outputs,
+                          duel_origin_of(&origin, np, NULL, pop)) != 0)
         return -1;
     duel_path(path, sizeof path, R->dir, "generations.csv");
     if (stat(path, &st) != 0 || st.st_size == 0) {
@@ -962,6 +980,7 @@ static int duel_load_opponents(duel_run *R, int copies)
         size_t len, need;
         void *mem;
         nrt_net net;
+        duel_origin origin;
         int e;
         if (strncmp(spec, "builtin:", 8) == 0) {
             R->opp[k].blob = NULL;
@@ -972,8 +991,17 @@ static int duel_load_opponents(duel_run *R, int copies)
             snprintf(path, sizeof path, "%s/opponents/%02u.blob", R->dir, k + 1u);
         else
             snprintf(path, sizeof path, "%s", spec);
-        if (duel_cli_read_blob(path, &blob, &len) != 0)
+        if (duel_cli_read_blob_origin(path, &blob, &len, &origin) != 0)
             return 2;
+        /* a champion is played in its own world: one made in another is no opponent of this run's games */
+        if (!copies && origin.world_from != DUEL_ORIGIN_NONE && !duel_rules_equal(&origin.world, &R->cfg.world)) {
+            char a[40], b[40];
+            fprintf(stderr, "duel_evolve: [opponents] %s: made in world %s, but this run plays in world %s: a "
+                            "champion is played in its own world (set [world] to it, or choose another opponent)\n",
+                    path, duel_world_label(&origin.world, a, sizeof a), duel_world_label(&R->cfg.world, b, sizeof b));
+            free(blob);
+            return 2;
+        }
         e = nrt_mem_required(blob, len, &need);
         mem = e == 0 ? malloc(need) : NULL;
         if (e == 0 && mem == NULL)

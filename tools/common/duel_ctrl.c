@@ -39,14 +39,10 @@ int duel_ctrl_run_of(const char *path, char *run, size_t cap)
     return access(ini, F_OK) == 0;
 }
 
-/* The step mode of the run a genome file lies in (its config.ini's
- * net_step), sync when it is in none: a genome has no mode of its own. */
-static int duel_genome_net_step(const char *path)
+int duel_run_net_step(const char *run)
 {
-    char run[4200], ini[4300], err[4400];
+    char ini[4300], err[4400];
     duel_config cfg;
-    if (!duel_ctrl_run_of(path, run, sizeof run))
-        return NEAT_STEP_SYNC;
     snprintf(ini, sizeof ini, "%s/config.ini", run);
     duel_config_default(&cfg);
     if (duel_config_read(&cfg, ini, err, sizeof err) != 0)
@@ -54,17 +50,100 @@ static int duel_genome_net_step(const char *path)
     return cfg.neat.net_step;
 }
 
-int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
+/* The origin of a file already read (buf, len: a blob or a genome file, not
+ * yet checked), with the genome parsed into g when it is one (g NULL: not
+ * kept). 0, or -1 with the line in err. */
+static int duel_origin_of_bytes(const char *path, const uint8_t *buf, size_t len, duel_origin *o, neat_genome *g,
+                                uint32_t *ni, uint32_t *no, char *err, size_t err_len)
 {
+    char run[4200];
+    int in_run = duel_ctrl_run_of(path, run, sizeof run);
+    memset(o, 0, sizeof *o);
+    o->net_step = NEAT_STEP_SYNC;
+    if (duel_is_genome_file(buf, len)) {
+        neat_genome_origin go;
+        neat_genome tmp;
+        neat_genome *gp = g != NULL ? g : &tmp;
+        if (duel_genome_parse_origin(path, buf, len, gp, ni, no, &go, err, err_len) != 0)
+            return -1;
+        if (g == NULL)
+            neat_genome_free(&tmp, NULL);
+        o->genome = 1;
+        if (go.version >= 2) {
+            o->net_step = go.net_step;
+            o->step_from = DUEL_ORIGIN_FILE;
+            /* the run's tag: the world's rules first (another program's tag names no world) */
+            if (go.tag_len >= DUEL_RULES_BYTES &&
+                duel_rules_decode(&o->world, go.tag, DUEL_RULES_BYTES, NULL) == DUEL_OK)
+                o->world_from = DUEL_ORIGIN_FILE;
+        }
+    } else if (len >= 6 && memcmp(buf, "NRTB", 4) == 0) {
+        /* a blob says its step by its version (docs/formats.md): 2 propagate */
+        o->net_step = buf[4] == NRT_FORMAT_VERSION_PROPAGATE && buf[5] == 0 ? NEAT_STEP_PROPAGATE : NEAT_STEP_SYNC;
+        o->step_from = DUEL_ORIGIN_FILE;
+    }
+    if (in_run && o->step_from == DUEL_ORIGIN_NONE) {
+        o->net_step = duel_run_net_step(run);
+        o->step_from = DUEL_ORIGIN_RUN;
+    }
+    if (in_run && o->world_from == DUEL_ORIGIN_NONE) {
+        if (duel_run_world(run, &o->world) != 0) {
+            snprintf(err, err_len, "%s: the world of its run %s cannot be read (above)", path, run);
+            return -1;
+        }
+        o->world_from = DUEL_ORIGIN_RUN;
+    }
+    return 0;
+}
+
+int duel_ctrl_origin(const char *spec, duel_origin *o)
+{
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    char err[4400];
+    int r;
+    memset(o, 0, sizeof *o);
+    if (strncmp(spec, "builtin:", 8) == 0) {
+        o->builtin = 1;
+        return 0;
+    }
+    if (duel_file_read(spec, DUEL_GENOME_MAX, &buf, &len) != 0) {
+        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", spec, errno == ENOENT ? "open" : "read",
+                errno == EFBIG ? "larger than 64 MB" : duel_file_strerror(errno));
+        return -1;
+    }
+    r = duel_origin_of_bytes(spec, buf, len, o, NULL, NULL, NULL, err, sizeof err);
+    free(buf);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s\n", err);
+    return r;
+}
+
+const char *duel_step_name(int net_step)
+{
+    return net_step == NEAT_STEP_PROPAGATE ? "propagate" : "sync";
+}
+
+const char *duel_origin_step_text(const duel_origin *o)
+{
+    if (o->builtin)
+        return "builtin";
+    return duel_step_name(o->net_step);
+}
+
+int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, duel_origin *origin)
+{
+    duel_origin own;
+    duel_origin *o = origin != NULL ? origin : &own;
+    char err[4400];
     int r = duel_file_read(path, DUEL_GENOME_MAX, blob, len);
     if (r == 0 && duel_is_genome_file(*blob, *len)) {
-        /* a genome file: its network's blob, as evolution would encode it */
+        /* a genome file: its network's blob, as evolution would encode it, in the step it was evolved with */
         neat_genome g;
         uint32_t ni, no;
         uint8_t *file = *blob;
-        char err[4400];
         *blob = NULL;
-        r = duel_genome_parse(path, file, *len, &g, &ni, &no, err, sizeof err);
+        r = duel_origin_of_bytes(path, file, *len, o, &g, &ni, &no, err, sizeof err);
         free(file);
         if (r != 0) {
             fprintf(stderr, "duel_evolve: %s\n", err);
@@ -73,8 +152,7 @@ int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
         }
         *len = neat_blob_size(&g);
         *blob = (uint8_t *)malloc(*len);
-        r = *blob == NULL ? NEAT_E_NOMEM
-                          : neat_blob_write_step(&g, ni, no, duel_genome_net_step(path), *blob, *len, len);
+        r = *blob == NULL ? NEAT_E_NOMEM : neat_blob_write_step(&g, ni, no, o->net_step, *blob, *len, len);
         neat_genome_free(&g, NULL);
         if (r != 0) {
             fprintf(stderr, "duel_evolve: %s: the genome has no blob: %s\n", path, neat_strerror(r));
@@ -90,8 +168,15 @@ int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
         r = -2;
         errno = EFBIG;
     }
-    if (r == 0)
-        return 0;
+    if (r == 0) {
+        if (duel_origin_of_bytes(path, *blob, *len, o, NULL, NULL, NULL, err, sizeof err) == 0)
+            return 0;
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        free(*blob);
+        *blob = NULL;
+        *len = 0;
+        return -1;
+    }
     *blob = NULL;
     *len = 0;
     if (r == -1)
@@ -102,6 +187,11 @@ int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
     else
         fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(errno));
     return -1;
+}
+
+int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
+{
+    return duel_cli_read_blob_origin(path, blob, len, NULL);
 }
 
 int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
@@ -118,9 +208,10 @@ int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
             return -1;
         }
         c->ctrl.builtin = b;
+        c->origin.builtin = 1;
         return 0;
     }
-    if (duel_cli_read_blob(spec, &c->blob, &size) != 0)
+    if (duel_cli_read_blob_origin(spec, &c->blob, &size, &c->origin) != 0)
         return -1;
     c->blob_len = size;
     err = nrt_mem_required(c->blob, size, &need);
@@ -272,23 +363,23 @@ int duel_run_world(const char *dir, duel_rules *r)
 
 int duel_ctrl_world(const char *const *specs, int n, duel_rules *r, int *found)
 {
-    char run[4200], first[4200], a[40], b[40];
-    duel_rules w;
+    char first[4200], a[40], b[40];
+    duel_origin o;
     int i;
     *found = 0;
     for (i = 0; i < n; i++) {
-        if (strncmp(specs[i], "builtin:", 8) == 0 || !duel_ctrl_run_of(specs[i], run, sizeof run))
-            continue;
-        if (duel_run_world(run, &w) != 0)
+        if (duel_ctrl_origin(specs[i], &o) != 0)
             return -1;
-        if (*found && !duel_rules_equal(&w, r)) {
+        if (o.world_from == DUEL_ORIGIN_NONE)
+            continue;
+        if (*found && !duel_rules_equal(&o.world, r)) {
             fprintf(stderr, "duel_evolve: %s is of world %s, %s of world %s: give --world to play them in one\n",
-                    first, duel_world_label(r, a, sizeof a), specs[i], duel_world_label(&w, b, sizeof b));
+                    first, duel_world_label(r, a, sizeof a), specs[i], duel_world_label(&o.world, b, sizeof b));
             return -1;
         }
         if (!*found)
             snprintf(first, sizeof first, "%s", specs[i]);
-        *r = w;
+        *r = o.world;
         *found = 1;
     }
     return 0;

@@ -8,6 +8,30 @@
 #include "duel.h"
 #include "duel_genome_file.h"
 
+/* Where a controller's world or step comes from. */
+enum { DUEL_ORIGIN_NONE = 0, DUEL_ORIGIN_FILE = 1, DUEL_ORIGIN_RUN = 2 };
+
+/* Where a champion file was made, as far as the file says or its place tells
+ * (docs/formats.md): a genome file of version 2 records its step and its
+ * run's tag (the world first); a blob records its step (its version) but no
+ * world; a file in a run's champions/ has its run's world and step. */
+typedef struct duel_origin {
+    int builtin;     /* builtin:NAME: no network, no world of its own */
+    int genome;      /* a genome file (else a blob) */
+    int world_from;  /* DUEL_ORIGIN_*: NONE, the file records no world and lies in no run */
+    duel_rules world;
+    int step_from;   /* DUEL_ORIGIN_*: NONE, a genome file of version 1 outside a run (played as sync) */
+    int net_step;    /* the step it is played with */
+} duel_origin;
+
+/* The origin of spec (a file, or builtin:NAME). 0, or -1 after one line naming the file. */
+int duel_ctrl_origin(const char *spec, duel_origin *o);
+/* The step mode of the run in dir (its config.ini's net_step); sync when it cannot be read. */
+int duel_run_net_step(const char *dir);
+/* "sync" or "propagate"; a controller's "builtin" when it is one. */
+const char *duel_step_name(int net_step);
+const char *duel_origin_step_text(const duel_origin *o);
+
 /* A controller named on the command line: a blob or genome file, or builtin:NAME. */
 typedef struct duel_cli_ctrl {
     duel_controller ctrl;
@@ -16,23 +40,27 @@ typedef struct duel_cli_ctrl {
     uint8_t *blob;
     size_t blob_len;
     char name[256];
+    duel_origin origin; /* where it was made (duel_ctrl_origin) */
 } duel_cli_ctrl;
 
 /* Whether path names a file in a run's champions/ (RUN/champions/NAME with
  * RUN/config.ini): 1 and RUN in run, else 0. */
 int duel_ctrl_run_of(const char *path, char *run, size_t cap);
 
-/* The world of the runs the controllers come from (each spec a file in a
- * run's champions/ counts): *found 1 and their world in *r; *found 0 when
- * none does; -1 after one line when two runs' worlds differ. */
+/* The world the controllers were made in (each spec whose origin has a world
+ * counts: a genome file that records it, or a file in a run's champions/):
+ * *found 1 and their world in *r; *found 0 when none says; -1 after one line
+ * when two worlds differ or a file cannot be read. */
 int duel_ctrl_world(const char *const *specs, int n, duel_rules *r, int *found);
 
 /* Reads the whole file at path into a malloc'd *blob (the caller frees it)
  * of *len bytes, not validated (a genome file gives its network's blob, in
- * the step mode of the run it lies in, else sync); on
+ * the step mode it records, else that of the run it lies in, else sync); on
  * error prints one line naming the file and the problem to stderr and
  * returns -1 (*blob NULL). */
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len);
+/* The same, with the file's origin in *origin (NULL: not wanted). */
+int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, duel_origin *origin);
 
 /* Loads spec into c; on error prints one line naming the problem to stderr
  * and returns -1. */

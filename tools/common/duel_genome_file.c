@@ -29,8 +29,14 @@ int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint3
 int duel_genome_parse(const char *path, const uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
                       uint32_t *n_outputs, char *err, size_t err_len)
 {
+    return duel_genome_parse_origin(path, buf, len, g, n_inputs, n_outputs, NULL, err, err_len);
+}
+
+int duel_genome_parse_origin(const char *path, const uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
+                             uint32_t *n_outputs, neat_genome_origin *origin, char *err, size_t err_len)
+{
     size_t off = 0;
-    int e = neat_genome_load(g, n_inputs, n_outputs, buf, len, NULL, &off);
+    int e = neat_genome_load_origin(g, n_inputs, n_outputs, origin, buf, len, NULL, &off);
     if (e == NEAT_E_NOMEM)
         snprintf(err, err_len, "%s: cannot load the genome: %s", path, neat_strerror(e));
     else if (e)
@@ -44,11 +50,12 @@ int duel_is_genome_file(const uint8_t *buf, size_t len)
     return len >= 8 && memcmp(buf, NEAT_GENOME_FILE_MAGIC, 8) == 0;
 }
 
-int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs)
+int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
+                      const neat_genome_origin *origin)
 {
     uint8_t *buf = NULL;
     size_t len = 0;
-    int err = neat_genome_save(g, n_inputs, n_outputs, &buf, &len, NULL), r;
+    int err = neat_genome_save_origin(g, n_inputs, n_outputs, origin, &buf, &len, NULL), r;
     if (err) {
         fprintf(stderr, "duel_evolve: %s: cannot encode the genome: %s\n", path, neat_strerror(err));
         return -1;

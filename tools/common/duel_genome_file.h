@@ -21,8 +21,16 @@ int duel_genome_parse(const char *path, const uint8_t *buf, size_t len, neat_gen
                       uint32_t *n_outputs, char *err, size_t err_len);
 /* Whether buf starts as a genome file does. */
 int duel_is_genome_file(const uint8_t *buf, size_t len);
-/* g as a genome file at path, written atomically (temporary file, rename);
- * on error prints one line and returns -1. */
-int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs);
+/* The same, also giving the file's origin (neat_genome_origin; its tag
+ * points into buf, so it is only given when origin is not NULL and the
+ * caller keeps buf: NULL leaves it unread). */
+int duel_genome_parse_origin(const char *path, const uint8_t *buf, size_t len, neat_genome *g, uint32_t *n_inputs,
+                             uint32_t *n_outputs, neat_genome_origin *origin, char *err, size_t err_len);
+/* g as a genome file at path, written atomically (temporary file, rename),
+ * with its origin (a run's champions: the run's step and game tag, so that the
+ * file still says where it was made once copied out; NULL: a version-1 file
+ * that says nothing); on error prints one line and returns -1. */
+int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
+                      const neat_genome_origin *origin);
 
 #endif /* DUEL_GENOME_FILE_H */

@@ -62,6 +62,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
         return -1;
     }
+    r->net_step = cfg.neat.net_step;
     if (ckpt) {
         snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
         e = duel_ckpt_load(pre, path, &c);

@@ -18,6 +18,7 @@
 typedef struct duel_perf_run {
     const char *dir;        /* as given */
     duel_rules world;       /* the rules it was made in (its checkpoint's, else its config.ini's) */
+    int net_step;           /* its networks' step (config.ini's net_step) */
     char real[PATH_MAX];    /* realpath: a run is never ranked against itself */
     duel_level *levels;
     uint32_t n_levels;

@@ -9,12 +9,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "duel_ctrl.h"
 #include "duel_dominance.h"
 #include "duel_exp.h"
 #include "duel_files.h"
 #include "duel_generations.h"
 #include "duel_perf.h"
 #include "duel_stats.h"
+#include "duel_world_cfg.h"
 
 #ifndef DUEL_PLOT_SCRIPT
 #define DUEL_PLOT_SCRIPT "plot_experiment.py"
@@ -40,6 +42,8 @@ typedef struct rep_run {
     double col[N_COLS];
     uint32_t ladder[DUEL_N_BUILTINS + 1][2]; /* the top dominant's wins and losses; [DUEL_N_BUILTINS]: total */
     double seconds;
+    duel_rules world; /* the run's own (its checkpoint's tag) */
+    int net_step;     /* its config.ini's */
 } rep_run;
 
 typedef struct rep_method {
@@ -57,6 +61,8 @@ typedef struct rep {
     uint32_t n_runs;
     rep_method m[DUEL_PLAN_MAX_METHODS];
     duel_test wil_conns, wil_hidden;
+    duel_rules world;     /* every run's: a report of runs of several worlds is refused */
+    char world_label[40];
     double first_conns, final_conns, first_hidden, final_hidden;
     uint32_t games; /* games per comparison of the reference runs' dominance tournaments */
 } rep;
@@ -104,6 +110,7 @@ typedef struct rep_ladder_ctx {
     rep_run *r;
     const char *path;
     int ok;
+    uint32_t fields; /* the header's */
 } rep_ladder_ctx;
 
 static int rep_ladder_line(void *ud, uint32_t line, char *text)
@@ -111,8 +118,11 @@ static int rep_ladder_line(void *ud, uint32_t line, char *text)
     rep_ladder_ctx *c = (rep_ladder_ctx *)ud;
     char *f[DUEL_REP_MAX_FIELDS];
     uint32_t n = rep_split(text, f, DUEL_REP_MAX_FIELDS), b;
+    /* ladder.csv ends with world and step since issue 49; a run's older ladder.csv (2 fields fewer) still reads */
+    if (line == 1)
+        c->fields = n;
     if (line == 1) {
-        if (n != 7 + 2 * DUEL_N_BUILTINS || strcmp(f[0], "level") != 0) {
+        if ((n != 7 + 2 * DUEL_N_BUILTINS && n != 9 + 2 * DUEL_N_BUILTINS) || strcmp(f[0], "level") != 0) {
             fprintf(stderr, "duel_evolve: experiment: %s:1: not the ladder.csv of this version (delete it: the "
                             "experiment writes it again)\n", c->path);
             return -1;
@@ -125,9 +135,8 @@ static int rep_ladder_line(void *ud, uint32_t line, char *text)
             }
         return 0;
     }
-    if (n != 7 + 2 * DUEL_N_BUILTINS) {
-        fprintf(stderr, "duel_evolve: experiment: %s:%u: %u fields, expected %d\n", c->path, line, n,
-                7 + 2 * DUEL_N_BUILTINS);
+    if (n != c->fields) {
+        fprintf(stderr, "duel_evolve: experiment: %s:%u: %u fields, expected %u\n", c->path, line, n, c->fields);
         return -1;
     }
     /* the last row is the top dominant's */
@@ -152,6 +161,10 @@ static int rep_read_run(rep *R, rep_run *r)
         fprintf(stderr, "duel_evolve: experiment: %s/%s/dominance.csv: no dominance level\n", R->dir, r->dir);
         return 2;
     }
+    /* the world and step the run was made with: the report names them, and refuses runs of several worlds */
+    if (duel_run_world(r->dir, &r->world) != 0)
+        return 2;
+    r->net_step = duel_run_net_step(r->dir);
     snprintf(path, sizeof path, "%s/ladder.csv", r->dir);
     lc.r = r;
     lc.path = path;
@@ -311,7 +324,7 @@ static void rep_write_table_csv(FILE *f, const void *ctx)
         fprintf(f, ",%s_mean,%s_sd", col_key[c], col_key[c]);
     for (c = 0; c < N_COLS; c++)
         fprintf(f, ",%s_p", col_key[c]);
-    fprintf(f, "\n");
+    fprintf(f, ",world,step\n");
     for (i = 0; i < R->p->n_methods; i++) {
         const rep_method *m = &R->m[i];
         fprintf(f, "%s,%u", R->p->m[i].name, m->n);
@@ -322,7 +335,7 @@ static void rep_write_table_csv(FILE *f, const void *ctx)
             if (i != R->p->ref)
                 rep_p(f, &m->test[c]);
         }
-        fprintf(f, "\n");
+        fprintf(f, ",%s,%s\n", R->world_label, duel_step_name(R->runs[m->first].net_step));
     }
 }
 
@@ -335,7 +348,7 @@ static void rep_write_runs_csv(FILE *f, const void *ctx)
         fprintf(f, ",%s", col_key[c]);
     for (b = 0; b < DUEL_N_BUILTINS; b++)
         fprintf(f, ",%s_wins,%s_losses", duel_builtin_name((int)b), duel_builtin_name((int)b));
-    fprintf(f, ",ladder_wins,ladder_losses\n");
+    fprintf(f, ",ladder_wins,ladder_losses,world,step\n");
     for (k = 0; k < R->n_runs; k++) {
         const rep_run *r = &R->runs[k];
         fprintf(f, "%s,%s,%u,%u,%u,%u,%u,%u,%.6f,%.6f,%.6f,%.6f", R->p->m[r->method].name, r->dir + 5, r->seed,
@@ -344,7 +357,7 @@ static void rep_write_runs_csv(FILE *f, const void *ctx)
                 r->col[COL_GEN_CO]);
         for (b = 0; b <= DUEL_N_BUILTINS; b++)
             fprintf(f, ",%u,%u", r->ladder[b][0], r->ladder[b][1]);
-        fprintf(f, "\n");
+        fprintf(f, ",%s,%s\n", R->world_label, duel_step_name(r->net_step));
     }
 }
 
@@ -374,13 +387,14 @@ static void rep_write_ladder_csv(FILE *f, const void *ctx)
 {
     const rep *R = (const rep *)ctx;
     uint32_t i, b, l[DUEL_N_BUILTINS + 1][2];
-    fprintf(f, "method,runs,opponent,games,wins,losses\n");
+    fprintf(f, "method,runs,opponent,games,wins,losses,world,step\n");
     for (i = 0; i < R->p->n_methods; i++) {
         rep_method_ladder(R, i, l);
         for (b = 0; b <= DUEL_N_BUILTINS; b++)
-            fprintf(f, "%s,%u,%s,%u,%u,%u\n", R->p->m[i].name, R->m[i].n,
+            fprintf(f, "%s,%u,%s,%u,%u,%u,%s,%s\n", R->p->m[i].name, R->m[i].n,
                     b < DUEL_N_BUILTINS ? duel_builtin_name((int)b) : "all", R->m[i].n * 2u * DUEL_CONFIGS *
-                    (b < DUEL_N_BUILTINS ? 1u : (uint32_t)DUEL_N_BUILTINS), l[b][0], l[b][1]);
+                    (b < DUEL_N_BUILTINS ? 1u : (uint32_t)DUEL_N_BUILTINS), l[b][0], l[b][1], R->world_label,
+                    duel_step_name(R->runs[R->m[i].first].net_step));
     }
 }
 
@@ -402,8 +416,18 @@ static void rep_write_md(FILE *f, const void *ctx)
     fprintf(f, "Mean (standard deviation) over each method's runs. *Highest*: the highest level of a ranking the "
                "run's top dominant defeats; *contiguous*: the highest level L such that it defeats every level up to "
                "L. Performance: that level over the ranking's levels; equivalent generation: that level's generation. "
-               "Each run is measured against every %s run but itself, %u games a level.\n\n", p->reference,
-            2u * DUEL_CONFIGS);
+               "Each run is measured against every %s run but itself, %u games a level, in world %s (identity "
+               "%016llx).", p->reference, 2u * DUEL_CONFIGS, R->world_label, (unsigned long long)duel_rules_id(&R->world));
+    for (i = 0; i < p->n_methods && R->runs[R->m[i].first].net_step == R->runs[0].net_step; i++)
+        ;
+    if (i == p->n_methods) {
+        fprintf(f, " Every network steps %s.\n\n", duel_step_name(R->runs[0].net_step));
+    } else {
+        fprintf(f, " Network step:");
+        for (i = 0; i < p->n_methods; i++)
+            fprintf(f, "%s %s %s", i ? "," : "", p->m[i].name, duel_step_name(R->runs[R->m[i].first].net_step));
+        fprintf(f, ".\n\n");
+    }
     fprintf(f, "| method | runs | dominance levels | generation of the highest dominant | performance (highest) | "
                "equivalent generation (highest) | performance (contiguous) | equivalent generation (contiguous) |\n");
     fprintf(f, "|---|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -476,13 +500,15 @@ static void rep_write_json(FILE *f, const void *ctx)
     const rep *R = (const rep *)ctx;
     const duel_plan *p = R->p;
     uint32_t i, k, b, l[DUEL_N_BUILTINS + 1][2];
-    fprintf(f, "{\n  \"reference\": \"%s\",\n  \"games_per_comparison\": %d,\n  \"methods\": [\n", p->reference,
-            2 * DUEL_CONFIGS);
+    fprintf(f, "{\n  \"reference\": \"%s\",\n  \"games_per_comparison\": %d,\n  \"world\": \"%s\",\n  "
+               "\"world_id\": \"%016llx\",\n  \"methods\": [\n", p->reference, 2 * DUEL_CONFIGS, R->world_label,
+            (unsigned long long)duel_rules_id(&R->world));
     for (i = 0; i < p->n_methods; i++) {
         const rep_method *m = &R->m[i];
         int t = i != p->ref;
-        fprintf(f, "    {\"name\": \"%s\", \"preset\": \"%s\", \"runs\": %u, \"random_fitness\": %s, ",
-                p->m[i].name, p->m[i].preset, m->n, p->m[i].cfg.coev.random_fitness ? "true" : "false");
+        fprintf(f, "    {\"name\": \"%s\", \"preset\": \"%s\", \"runs\": %u, \"random_fitness\": %s, \"step\": \"%s\", ",
+                p->m[i].name, p->m[i].preset, m->n, p->m[i].cfg.coev.random_fitness ? "true" : "false",
+                duel_step_name(R->runs[m->first].net_step));
         rep_json_test(f, "levels", m, COL_LEVELS, t);
         fprintf(f, ", ");
         rep_json_test(f, "top_generation", m, COL_TOPGEN, t);
@@ -825,7 +851,19 @@ int duel_exp_report_here(const duel_plan *p, const char *dir)
             rc = rep_read_run(&R, r);
         }
     }
+    /* one world for every run, or no report (the plan says one; a directory put together by hand may not) */
+    for (k = 1; rc == 0 && k < R.n_runs; k++)
+        if (!duel_rules_equal(&R.runs[k].world, &R.runs[0].world)) {
+            char a[40], b[40];
+            fprintf(stderr, "duel_evolve: experiment: %s: runs of several worlds: %s is of world %s, %s of world %s; "
+                            "a report compares runs of one world\n", dir, R.runs[0].dir,
+                    duel_world_label(&R.runs[0].world, a, sizeof a), R.runs[k].dir,
+                    duel_world_label(&R.runs[k].world, b, sizeof b));
+            rc = 2;
+        }
     if (rc == 0) {
+        R.world = R.runs[0].world;
+        duel_world_label(&R.world, R.world_label, sizeof R.world_label);
         rc = rep_measure(&R);
         if (rc == 1)
             fprintf(stderr, "duel_evolve: experiment: report: out of memory\n");
