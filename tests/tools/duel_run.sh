@@ -70,8 +70,8 @@ overrides)
   "$duel" run --config "$cfg" --out "$tmp/o" --quiet --generations 3
   "$duel" resume "$tmp/o" --quiet --generations 5 --set add_node_prob=0.05 --set coevolution.hof_opponents=6
   grep -q "override add_node_prob=0.05" "$tmp/o/log.txt" || { echo "override not logged"; exit 1; }
-  grep -q "^add_node_prob = 0.05" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
-  grep -q "^hof_opponents = 6" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
+  # stored with the generation it applies from ([overrides], issue 49: [neat] and [coevolution] keep generation 0's)
+  grep -qx "from 3 = add_node_prob=0.05, coevolution.hof_opponents=6" "$tmp/o/config.ini" || { echo "override not stored"; exit 1; }
   grep -q "^generations = 5" "$tmp/o/config.ini" || { echo "generations not stored"; exit 1; }
   [ "$(ls "$tmp/o/champions/"*.blob | wc -l)" -eq 5 ] || { echo "not extended to 5 generations"; exit 1; }
   grep -q "resume: generations 3 -> 5 (extended; config.ini now says 5)" "$tmp/o/log.txt" || fail "extension not logged"

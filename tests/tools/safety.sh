@@ -338,7 +338,9 @@ counters)
     python3 - "$tmp/src/champions/gen-00000.genome" "$tmp/$field.genome" "$field" <<'PY'
 import struct, sys, zlib
 b = bytearray(open(sys.argv[1], "rb").read()[:-4])
-at = 20  # magic, version, inputs, outputs
+at = 20  # magic, version, inputs, outputs; format 2 then the step and the run's tag (docs/formats.md)
+if b[8] == 2:
+    at = 28 + struct.unpack_from("<I", b, 24)[0]
 n_nodes = struct.unpack_from("<I", b, at)[0]
 if sys.argv[3] == "node":  # the last node, a hidden one, renumbered near 2^31 (its connections follow it)
     last = at + 4 + 5 * (n_nodes - 1)
@@ -372,7 +374,7 @@ small)
   "$duel" compare "r,1" r2 --against "r,1" r2 r3 --csv q.csv > /dev/null
   python3 -c 'import csv, sys
 rows = list(csv.reader(open("q.csv")))
-assert all(len(r) == 12 for r in rows), rows
+assert all(len(r) == 15 for r in rows), rows  # wins, then world and both steps (issue 49)
 assert sorted(r[0] for r in rows[1:]) == ["r,1", "r,1", "r2", "r2"], rows' || fail "compare --csv: $(cat q.csv)"
   mv "r,1" r1
   # every chunk of comparisons is saved at once: a killed compare keeps what it played

@@ -264,19 +264,52 @@ edits)
   expect_bad "the run has played its 3 generations: an override (--set) applies to generations to come" \
     resume "$tmp/f" --set add_node_prob=0.05
   cmp -s "$tmp/f/config.ini" "$tmp/ref/config.ini" || fail "a refused override reached config.ini"
-  # a resume with an override killed before its first checkpoint: config.ini (the run's) says the override, the
-  # checkpoint does not; the checkpoint is the run: the same bytes as a resume without it, and logged
+  # a resume with an override killed before its first checkpoint: config.ini says the override from generation 3
+  # on ([overrides]), the checkpoint is at 3: they agree, and the next resume plays it (the same bytes as the resume
+  # that was not killed)
   cp -r "$tmp/ref" "$tmp/k"
   "$duel" resume "$tmp/k" --set add_node_prob=0.05 --generations 4 --quiet
+  cp -r "$tmp/k" "$tmp/full"
   for f in checkpoint.bin generations.csv dominance.csv; do cp "$tmp/ref/$f" "$tmp/k/$f"; done
   rm -f "$tmp/k/champions/gen-00003."*
+  grep -qx "from 3 = add_node_prob=0.05" "$tmp/k/config.ini" || fail "the override's generation: $(tail -2 "$tmp/k/config.ini")"
+  grep -q "^add_node_prob = 0.01$" "$tmp/k/config.ini" || fail "[neat] is not generation 0's"
   "$duel" resume "$tmp/k" --quiet || fail "a resume after an override that was never saved"
-  grep -q "resume: config.ini said 'add_node_prob = 0.05', the checkpoint 'add_node_prob = 0.01'" "$tmp/k/log.txt" ||
-    fail "not logged: $(tail -3 "$tmp/k/log.txt")"
+  cmp -s "$tmp/k/checkpoint.bin" "$tmp/full/checkpoint.bin" || fail "the scheduled override was not played"
   cp -r "$tmp/ref" "$tmp/plain"
   "$duel" resume "$tmp/plain" --generations 4 --quiet
-  cmp -s "$tmp/k/checkpoint.bin" "$tmp/plain/checkpoint.bin" || fail "the checkpoint's parameters were not the run's"
-  grep -q "^add_node_prob = 0.01$" "$tmp/k/config.ini" || fail "config.ini not written again from the checkpoint"
+  ! cmp -s "$tmp/k/checkpoint.bin" "$tmp/plain/checkpoint.bin" || fail "the override changed nothing: nothing tested"
+  # §3: the override is in the checkpoint with its generation, and run --config RUN/config.ini plays the run again
+  "$duel" run --config "$tmp/full/config.ini" --out "$tmp/again" --quiet
+  for f in checkpoint.bin dominance.csv champions/gen-00003.blob; do
+    cmp -s "$tmp/full/$f" "$tmp/again/$f" || fail "run --config RUN/config.ini: $f differs"
+  done
+  grep -q "generation 3: overrides from here on: add_node_prob=0.05" "$tmp/again/log.txt" || fail "not logged"
+  grep -a -q "OVR1" "$tmp/full/checkpoint.bin" || fail "the checkpoint does not record the override"
+  ! grep -a -q "OVR1" "$tmp/plain/checkpoint.bin" || fail "a run without overrides records some"
+  # the same for a run against fixed opponents (its checkpoint a population's)
+  presets=$(cd "$(dirname "$0")/../../configs" && pwd)
+  "$duel" run --config "$presets/vs-forager-hunter.ini" --set pop_size=16 --generations 2 --out "$tmp/fx" --quiet
+  "$duel" resume "$tmp/fx" --generations 4 --set add_node_prob=0.2 --quiet
+  "$duel" run --config "$tmp/fx/config.ini" --out "$tmp/fy" --quiet
+  cmp -s "$tmp/fx/checkpoint.bin" "$tmp/fy/checkpoint.bin" || fail "a fixed-opponent run's overrides were not played again"
+  # an edit of a line the run has played is refused, naming the cause
+  cp -r "$tmp/full" "$tmp/m"
+  sed -i 's/^from 3 = /from 2 = /' "$tmp/m/config.ini"
+  expect_bad "m/checkpoint.bin: the run was played with other \[overrides\] before generation 4 than config.ini says" \
+    resume "$tmp/m" --generations 5
+  cp -r "$tmp/full" "$tmp/m2"
+  sed -i 's/^from 3 = add_node_prob=0.05/from 3 = add_node_prob=0.06/' "$tmp/m2/config.ini"
+  expect_bad "m2/config.ini says 'add_node_prob = 0.06' but the run in its checkpoint has 'add_node_prob = 0.05'" \
+    resume "$tmp/m2" --generations 5
+  # what [overrides] refuses
+  printf '[overrides]\nfrom 0 = add_node_prob=0.05\n' > "$tmp/o0.ini"
+  expect_bad "o0.ini:2: \[overrides\] 'from 0': expected 'from G' with G a generation from 1 on" config --config "$tmp/o0.ini" --dump
+  printf '[overrides]\nfrom 2 = seed=4\n' > "$tmp/o1.ini"
+  expect_bad "o1.ini:2: \[overrides\] from 2: 'seed=4': expected key=value of a \[neat\] or \[coevolution\] parameter" \
+    config --config "$tmp/o1.ini" --dump
+  printf '[overrides]\nfrom 2 = pop_size=40\n' > "$tmp/o2.ini"
+  expect_bad "\[overrides\] from 2: pop_size cannot change during a run" run --config "$cfg" --config "$tmp/o2.ini" --out "$tmp/never"
   # a run directory from before the seal resumes as before
   cp -r "$tmp/ref" "$tmp/old"
   sed -i 2,3d "$tmp/old/config.ini"

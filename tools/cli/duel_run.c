@@ -40,7 +40,8 @@ static volatile sig_atomic_t duel_stop = 0;
 
 typedef struct duel_run {
     const char *dir;
-    duel_config cfg;
+    duel_config cfg;           /* config.ini: generation 0's parameters and the [overrides] from later ones */
+    duel_config eff;           /* the parameters of the generation in flight (cfg with its overrides up to it) */
     neat_coev *coev;           /* a coevolution run, or */
     duel_fixed *fixed;         /* a run against fixed opponents ([opponents] play) */
     duel_net opp[DUEL_MAX_OPPONENTS]; /* its opponents (blobs malloc'd) */
@@ -55,6 +56,7 @@ typedef struct duel_run {
     double bar_drawn;          /* when the bar was last drawn */
     int log_failed;            /* log.txt could not be written: the run stops after the generation */
     double gen_secs;           /* this process's generations, in seconds */
+    uint32_t first_applied;    /* 1 + the generation whose overrides were applied before the loop (0: none) */
 } duel_run;
 
 static double duel_now(void)
@@ -350,7 +352,7 @@ static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ)
     if (R->cfg.strength_every == 0 || g % R->cfg.strength_every != 0)
         return 0;
     neat_phenotype_init(&ph, NULL);
-    err = neat_phenotype_load(&ph, champ, &R->cfg.neat);
+    err = neat_phenotype_load(&ph, champ, &R->eff.neat);
     if (err == 0)
         err = duel_strength_row(R, g, ph.blob, ph.blob_len, row, sizeof row);
     neat_phenotype_free(&ph);
@@ -594,7 +596,7 @@ static void duel_report(duel_run *R, const neat_coev_report *rep, double secs)
     neat_dominant d;
     /* what the scores are out of: a host's games (its fitness is its wins), a comparison's games */
     uint32_t host_games = (uint32_t)(rep->pop[0].games / (R->cfg.neat.pop_size ? R->cfg.neat.pop_size : 1u));
-    uint32_t cmp_games = 2u * R->cfg.coev.compare_configs, cw = rep->champion_pop;
+    uint32_t cmp_games = 2u * R->eff.coev.compare_configs, cw = rep->champion_pop;
     uint32_t dh, dc;
     uint32_t gens_done = rep->generation + 1u - R->first_gen, left = R->cfg.generations - rep->generation - 1u;
     double elapsed = duel_now() - R->started, gps = secs > 0 ? rep->games / secs : 0;
@@ -683,6 +685,32 @@ static void duel_report_fixed(duel_run *R, const duel_fixed_report *rep, double 
 }
 
 /* Generations until the configured count, a signal or an error. */
+/* The [overrides] that start at generation g, applied to the run before it plays g (as a resume at g applies them
+ * to its checkpoint: the same run either way). 0, or 2 after one line. */
+static int duel_apply_overrides(duel_run *R, uint32_t g)
+{
+    char err[600];
+    uint32_t k;
+    int e;
+    for (k = 0; k < R->cfg.n_over && R->cfg.over[k].from != g; k++)
+        ;
+    if (k == R->cfg.n_over || R->first_applied == g + 1u)
+        return 0; /* none, or applied already by the resume that starts here */
+    if (duel_config_at(&R->cfg, g, &R->eff, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
+    e = R->fixed != NULL ? neat_pop_set_params(duel_fixed_pop(R->fixed), &R->eff.neat)
+                         : neat_coev_set_params(R->coev, &R->eff.neat, &R->eff.coev);
+    if (e) {
+        fprintf(stderr, "duel_evolve: [overrides] from %u: %s\n", g, neat_strerror(e));
+        return 2;
+    }
+    duel_games_set_params(R->games, &R->eff.neat);
+    duel_log(R, "generation %u: overrides from here on: %s", g, R->cfg.over[k].sets);
+    return 0;
+}
+
 static int duel_loop(duel_run *R)
 {
     duel_stop = 0; /* a process that plays several runs (the Python package) starts each without a stop */
@@ -708,6 +736,8 @@ static int duel_loop(duel_run *R)
             return 130;
         }
         R->gen_in_flight = duel_next_gen(R);
+        if ((err = duel_apply_overrides(R, R->gen_in_flight)) != 0)
+            return err;
         if (R->fixed != NULL) {
             err = duel_fixed_step(R->fixed, R->games, &frep);
         } else {
@@ -879,7 +909,7 @@ static int duel_go(duel_run *R)
         return 2;
     }
     err = duel_games_create(&R->games, R->threads == 0 && ranks > 1 ? duel_mpi_default_threads() : R->threads,
-                            &R->cfg.neat);
+                            &R->eff.neat);
     if (err) {
         fprintf(stderr, "duel_evolve: out of memory\n");
         return 1;
@@ -935,7 +965,43 @@ static int duel_tag_run(duel_run *R)
 /* A resumed run's tag against config.ini's: 0, or -1 after one line naming
  * what changed. An empty tag (a run from before the rules were data) is
  * world v1's with the training food. */
-static int duel_check_tag(const duel_run *R, const uint8_t *tag, size_t len, const char *path)
+/* The overrides a tag records from before generation g against config.ini's: the same lines, in the same order
+ * (a change to one the run has played is a hand edit; those from g on are still to come). 1 when they agree. */
+static int duel_tag_overrides_agree(const duel_config *cfg, const uint8_t *tag, size_t len, uint32_t g)
+{
+    size_t at = duel_run_tag_overrides(tag, len);
+    uint32_t n = 0, k, j = 0;
+    if (at < len) {
+        at += 4;
+        if (at + 4 > len)
+            return 0;
+        n = (uint32_t)tag[at] | (uint32_t)tag[at + 1] << 8 | (uint32_t)tag[at + 2] << 16 | (uint32_t)tag[at + 3] << 24;
+        at += 4;
+    }
+    for (k = 0; k < n; k++) {
+        uint32_t from, tl;
+        if (at + 8 > len)
+            return 0;
+        from = (uint32_t)tag[at] | (uint32_t)tag[at + 1] << 8 | (uint32_t)tag[at + 2] << 16 |
+               (uint32_t)tag[at + 3] << 24;
+        tl = (uint32_t)tag[at + 4] | (uint32_t)tag[at + 5] << 8 | (uint32_t)tag[at + 6] << 16 |
+             (uint32_t)tag[at + 7] << 24;
+        at += 8;
+        if (tl > len - at)
+            return 0;
+        if (from < g) {
+            if (j >= cfg->n_over || cfg->over[j].from != from || strlen(cfg->over[j].sets) != tl ||
+                memcmp(cfg->over[j].sets, tag + at, tl) != 0)
+                return 0;
+            j++;
+        }
+        at += tl;
+    }
+    /* config.ini has no line before g that the checkpoint lacks */
+    return j == cfg->n_over || cfg->over[j].from >= g;
+}
+
+static int duel_check_tag(const duel_run *R, const uint8_t *tag, size_t len, const char *path, uint32_t g)
 {
     uint8_t want[DUEL_TAG_MAX];
     size_t wlen;
@@ -954,6 +1020,14 @@ static int duel_check_tag(const duel_run *R, const uint8_t *tag, size_t len, con
                 duel_world_label(&made, a, sizeof a), duel_world_label(&R->cfg.world, b, sizeof b));
         return -1;
     }
+    if (len > 0 && !duel_tag_overrides_agree(&R->cfg, tag, len, g)) {
+        fprintf(stderr, "duel_evolve: %s: the run was played with other [overrides] before generation %u than "
+                        "config.ini says (a hand edit): restore config.ini\n", path, g);
+        return -1;
+    }
+    /* what makes the games, the overrides apart (compared above) */
+    len = duel_run_tag_overrides(tag, len);
+    wlen = duel_run_tag_overrides(want, wlen);
     if (len == 0 ? R->cfg.train_layouts != DUEL_TRAIN_FIXED || R->cfg.opp.n != 0
                  : len != wlen || memcmp(tag, want, len) != 0) {
         fprintf(stderr, "duel_evolve: %s: the run was made with other games than config.ini now makes ([run] "
@@ -1088,14 +1162,26 @@ static int duel_create(duel_run *R)
     int e;
     if ((e = duel_check_reproduction(R)) != 0)
         return e;
+    /* generation 0's parameters: [overrides] start later (from 1 on) */
+    if (duel_config_at(&R->cfg, 0, &R->eff, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
+    if (R->cfg.n_over > 0 && R->cfg.reproduction != DUEL_REPRODUCE_LIBNEAT) {
+        fprintf(stderr, "duel_evolve: [overrides] with [run] reproduction = neat-cpp-1.2.1: the release's "
+                        "reproduction takes its parameters once; give them in [neat]\n");
+        return 2;
+    }
     if (R->cfg.opp.n == 0) {
         /* a coevolution: as the Python package starts one (duel_runtag.c) */
-        e = duel_coev_new(&R->coev, &R->cfg, err, sizeof err);
+        e = duel_coev_new(&R->coev, &R->eff, err, sizeof err);
         if (e)
             fprintf(stderr, "duel_evolve: %s\n", err);
+        if (e == 0 && R->cfg.n_over > 0 && (e = duel_tag_run(R)) != 0)
+            fprintf(stderr, "duel_evolve: cannot start: %s\n", neat_strerror(e)); /* the tag with the schedule */
         if (e == 0 && R->cfg.reproduction != DUEL_REPRODUCE_LIBNEAT) {
             /* the other NEAT's populations replace libneat's from generation 0 on */
-            if (duel_other.begin(duel_other.ud, &R->cfg) != 0)
+            if (duel_other.begin(duel_other.ud, &R->eff) != 0)
                 return 2;
             e = neat_coev_set_reproducer(R->coev, duel_other.reproduce, duel_other.ud);
             if (e) {
@@ -1117,9 +1203,9 @@ static int duel_create(duel_run *R)
             neat_genome_free(&g, NULL);
             return e;
         }
-        e = neat_pop_create(&pop, &R->cfg.neat, &st, R->cfg.seed, NULL);
+        e = neat_pop_create(&pop, &R->eff.neat, &st, R->cfg.seed, NULL);
         if (e == 0)
-            e = duel_fixed_new(&R->fixed, pop, &R->cfg, R->opp, R->cfg.opp.n);
+            e = duel_fixed_new(&R->fixed, pop, &R->eff, R->opp, R->cfg.opp.n);
     }
     neat_genome_free(&g, NULL);
     if (e == 0)
@@ -1697,12 +1783,68 @@ static int duel_take_checkpoint(duel_run *R, duel_config *before, const neat_par
     return 0;
 }
 
+/* A resume's parameters against its checkpoint at generation g: config.ini as played up to g - 1 (generation
+ * 0's with the [overrides] before g) must be what the checkpoint holds; a sealed config.ini that is not (an
+ * override of a resume from before [overrides], baked into [neat], whose generation was never saved) gives way
+ * to the checkpoint. 0, or the exit status after one line. */
+static int duel_resume_params(duel_run *R, duel_config *before, const neat_params *np, const neat_coev_params *cp,
+                              uint32_t g, int sealed, char **psets, uint32_t n_psets, char *differs,
+                              size_t differs_cap)
+{
+    duel_config played;
+    char err[600];
+    int e;
+    if (duel_config_at(before, g > 0 ? g - 1u : 0, &played, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s/config.ini: %s\n", R->dir, err);
+        return 2;
+    }
+    /* a key this resume sets is a change made the right way, edited by hand to the same value or not */
+    e = duel_check_edits(&played, np, cp, R->dir, psets, n_psets,
+                         sealed == 1 && before->n_over == 0 ? differs : NULL, differs_cap);
+    if (e == 3)
+        return duel_take_checkpoint(R, before, np, cp, NULL, 0, differs);
+    if (e != 0 || n_psets == 0)
+        return e;
+    {
+        char quiet[700]; /* the probe says nothing: 3 when config.ini was edited to what --set gives */
+        if (duel_check_edits(&played, np, cp, R->dir, NULL, 0, quiet, sizeof quiet) == 0)
+            return 0;
+    }
+    /* config.ini edited by hand to what --set gives: the change applies from g (it goes into [overrides]), and
+     * generation 0's values are the checkpoint's, the run having no overrides before */
+    if (before->n_over > 0)
+        return duel_check_edits(&played, np, cp, R->dir, NULL, 0, NULL, 0); /* says which key; with a schedule,
+                                                                                * the hand edit stays refused */
+    R->cfg.neat = *np;
+    if (cp != NULL)
+        R->cfg.coev = *cp;
+    return 0;
+}
+
+/* This resume's parameter overrides go into [overrides] from generation g, and the run plays g with every
+ * override up to it. 0, or 2 after one line. */
+static int duel_resume_schedule(duel_run *R, uint32_t g, char **psets, uint32_t n_psets)
+{
+    char err[600];
+    if (n_psets > 0 && g < R->cfg.generations &&
+        duel_config_add_override(&R->cfg, g, (const char *const *)psets, n_psets, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: resume: --set: %s\n", err);
+        return 2;
+    }
+    if (duel_config_at(&R->cfg, g, &R->eff, err, sizeof err) != 0 || duel_config_check(&R->eff, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", err);
+        return 2;
+    }
+    R->first_applied = g + 1u;
+    return 0;
+}
+
 static int duel_resume_main(int argc, char **argv)
 {
     duel_run R;
     neat_pop *pop = NULL;
-    char err[600], path[4200], *sets[64], differs[700] = "";
-    uint32_t gens = 0, n_sets = 0, k, g;
+    char err[600], path[4200], *sets[64], *psets[64], differs[700] = "";
+    uint32_t gens = 0, n_sets = 0, n_psets = 0, k, g;
     int i, c, have_gens = 0, shorten = 0, e, sealed;
     uint32_t seal_gens = 0, seal_every = 0;
     duel_config before;
@@ -1755,10 +1897,21 @@ static int duel_resume_main(int argc, char **argv)
     }
     if (duel_take_lock(R.dir) != 0)
         return 2;
-    if (duel_config_set_list(&R.cfg, (const char *const *)sets, n_sets, &k, err, sizeof err) != 0) {
-        char esc[1100];
-        fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
-        return 2;
+    /* the parameters (a [neat] or [coevolution] key) apply from the next generation on and go into [overrides];
+     * the other keys ([run]'s) change config.ini itself. Both are checked here, on a copy, first. */
+    {
+        duel_config scratch = R.cfg;
+        if (duel_config_set_list(&scratch, (const char *const *)sets, n_sets, &k, err, sizeof err) != 0) {
+            char esc[1100];
+            fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
+            return 2;
+        }
+        for (k = 0; k < n_sets; k++) {
+            if (duel_config_set_is_param(sets[k]))
+                psets[n_psets++] = sets[k];
+            else if (duel_config_set(&R.cfg, sets[k], err, sizeof err) != 0)
+                return 2; /* not reached: applied above */
+        }
     }
     if (have_gens)
         R.cfg.generations = gens;
@@ -1794,9 +1947,20 @@ static int duel_resume_main(int argc, char **argv)
                         "instead\n");
         return 2;
     }
-    if (duel_config_check(&R.cfg, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
-        return 2;
+    {
+        /* what the run would play with the overrides (wherever they are scheduled) */
+        duel_config scratch;
+        if (duel_config_check(&R.cfg, err, sizeof err) != 0 ||
+            duel_config_at(&R.cfg, UINT32_MAX, &scratch, err, sizeof err) != 0 ||
+            duel_config_set_list(&scratch, (const char *const *)psets, n_psets, NULL, err, sizeof err) != 0 ||
+            duel_config_check(&scratch, err, sizeof err) != 0) {
+            fprintf(stderr, "duel_evolve: %s\n", err);
+            return 2;
+        }
+        if (scratch.neat.pop_size != R.cfg.neat.pop_size) {
+            fprintf(stderr, "duel_evolve: the overrides do not fit this run (pop_size cannot change)\n");
+            return 2;
+        }
     }
 
     /* a hand edit of any key is refused: the NEAT and coevolution keys are named below (against the checkpoint),
@@ -1821,28 +1985,29 @@ static int duel_resume_main(int argc, char **argv)
             return 2;
         }
         duel_run_free(&R);
+        /* no generation was played: the parameters are generation 0's */
+        if (duel_config_set_list(&R.cfg, (const char *const *)psets, n_psets, NULL, err, sizeof err) != 0)
+            return 2; /* not reached: checked above */
         if ((e = duel_create(&R)) != 0)
             return e;
     } else if (R.cfg.opp.n > 0) {
         size_t tlen = 0;
         const uint8_t *tag = neat_pop_game(pop, &tlen);
-        e = duel_check_edits(&before, neat_pop_params(pop), NULL, R.dir, sets, n_sets, sealed == 1 ? differs : NULL,
-                             sizeof differs);
-        if (e == 3)
-            e = duel_take_checkpoint(&R, &before, neat_pop_params(pop), NULL, sets, n_sets, differs);
+        g = neat_pop_generation(pop);
+        e = duel_resume_params(&R, &before, neat_pop_params(pop), NULL, g, sealed, psets, n_psets, differs,
+                               sizeof differs);
+        if (e == 0 && duel_check_tag(&R, tag, tlen, path, g) != 0)
+            e = 2;
+        if (e == 0)
+            e = duel_resume_schedule(&R, g, psets, n_psets);
         if (e != 0) {
             neat_pop_free(pop);
             duel_run_free(&R);
             return e;
         }
-        if (duel_check_tag(&R, tag, tlen, path) != 0) {
-            neat_pop_free(pop);
-            duel_run_free(&R);
-            return 2;
-        }
-        e = neat_pop_set_params(pop, &R.cfg.neat);
+        e = neat_pop_set_params(pop, &R.eff.neat);
         if (e == 0)
-            e = duel_fixed_new(&R.fixed, pop, &R.cfg, R.opp, R.cfg.opp.n);
+            e = duel_fixed_new(&R.fixed, pop, &R.eff, R.opp, R.cfg.opp.n);
         else
             neat_pop_free(pop);
         if (e) {
@@ -1860,20 +2025,18 @@ static int duel_resume_main(int argc, char **argv)
             duel_run_free(&R);
             return 2;
         }
-        e = duel_check_edits(&before, neat_pop_params(neat_coev_pop(R.coev, 0)), neat_coev_get_params(R.coev), R.dir,
-                             sets, n_sets, sealed == 1 ? differs : NULL, sizeof differs);
-        if (e == 3)
-            e = duel_take_checkpoint(&R, &before, neat_pop_params(neat_coev_pop(R.coev, 0)),
-                                     neat_coev_get_params(R.coev), sets, n_sets, differs);
+        g = neat_coev_generation(R.coev);
+        e = duel_resume_params(&R, &before, neat_pop_params(neat_coev_pop(R.coev, 0)), neat_coev_get_params(R.coev),
+                               g, sealed, psets, n_psets, differs, sizeof differs);
+        if (e == 0 && (duel_check_start(&R, path) != 0 || duel_check_tag(&R, tag, tlen, path, g) != 0))
+            e = 2;
+        if (e == 0)
+            e = duel_resume_schedule(&R, g, psets, n_psets);
         if (e != 0) {
             duel_run_free(&R);
             return e;
         }
-        if (duel_check_start(&R, path) != 0 || duel_check_tag(&R, tag, tlen, path) != 0) {
-            duel_run_free(&R);
-            return 2;
-        }
-        e = neat_coev_set_params(R.coev, &R.cfg.neat, &R.cfg.coev);
+        e = neat_coev_set_params(R.coev, &R.eff.neat, &R.eff.coev);
         if (e) {
             fprintf(stderr, "duel_evolve: the overrides do not fit this run (pop_size cannot change): %s\n",
                     neat_strerror(e));

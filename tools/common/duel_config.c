@@ -352,10 +352,141 @@ static int duel_opp_set(duel_opponents *o, const char *name, const char *value, 
     return -1;
 }
 
+/* [overrides] from G = key=value, ...: kept as text (checked whole by duel_config_check, when every section is
+ * read), in generation order */
+static int duel_over_set(duel_config *cfg, const char *name, const char *value, char *err, size_t err_len)
+{
+    const char *p = value, *item;
+    size_t len;
+    uint32_t g = 0, k;
+    int more = 1;
+    if (strncmp(name, "from ", 5) != 0 || name[5] == '\0' || strspn(name + 5, "0123456789") != strlen(name + 5) ||
+        strlen(name + 5) > 9 || (g = (uint32_t)strtoul(name + 5, NULL, 10)) == 0) {
+        snprintf(err, err_len, "[overrides] '%s': expected 'from G' with G a generation from 1 on (from G = "
+                               "key=value, ...)", name);
+        return -1;
+    }
+    if (cfg->n_over == DUEL_MAX_OVERRIDES) {
+        snprintf(err, err_len, "[overrides]: more than %d lines", DUEL_MAX_OVERRIDES);
+        return -1;
+    }
+    if (strlen(value) >= DUEL_OVERRIDE_MAX) {
+        snprintf(err, err_len, "[overrides] from %u: %zu characters (at most %d)", g, strlen(value),
+                 DUEL_OVERRIDE_MAX - 1);
+        return -1;
+    }
+    while (more && *p != '\0') {
+        char one[DUEL_OVERRIDE_MAX];
+        more = duel_list_next(&p, &item, &len);
+        memcpy(one, item, len);
+        one[len] = '\0';
+        if (len == 0 || strchr(one, '=') == NULL || !duel_config_set_is_param(one)) {
+            snprintf(err, err_len, "[overrides] from %u: '%s': expected key=value of a [neat] or [coevolution] "
+                                   "parameter", g, one);
+            return -1;
+        }
+    }
+    if (value[0] == '\0') {
+        snprintf(err, err_len, "[overrides] from %u: no change", g);
+        return -1;
+    }
+    /* in generation order, whatever the file's */
+    for (k = cfg->n_over; k > 0 && cfg->over[k - 1u].from > g; k--)
+        cfg->over[k] = cfg->over[k - 1u];
+    cfg->over[k].from = g;
+    snprintf(cfg->over[k].sets, sizeof cfg->over[k].sets, "%s", value);
+    cfg->n_over++;
+    return 0;
+}
+
+int duel_config_set_is_param(const char *assignment)
+{
+    char key[64];
+    const char *eq = strchr(assignment, '='), *dot;
+    size_t n = eq != NULL ? (size_t)(eq - assignment) : strlen(assignment);
+    if (n >= sizeof key)
+        return 0;
+    memcpy(key, assignment, n);
+    key[n] = '\0';
+    dot = strchr(key, '.');
+    if (dot != NULL)
+        return (strncmp(key, "coevolution.", 12) == 0 && duel_has_key(duel_coev_keys, N_COEV, key + 12)) ||
+               (strncmp(key, "neat.", 5) == 0 && strcmp(key + 5, "start") != 0 && neat_config_has_key(key + 5));
+    return duel_has_key(duel_coev_keys, N_COEV, key) || (strcmp(key, "start") != 0 && neat_config_has_key(key));
+}
+
+int duel_config_at(const duel_config *cfg, uint32_t g, duel_config *out, char *err, size_t err_len)
+{
+    uint32_t k;
+    *out = *cfg;
+    out->n_over = 0;
+    for (k = 0; k < cfg->n_over && cfg->over[k].from <= g; k++) {
+        const char *sets[DUEL_OVERRIDE_MAX / 4], *p = cfg->over[k].sets, *item;
+        char buf[DUEL_OVERRIDE_MAX], msg[400];
+        size_t len, at = 0;
+        uint32_t n = 0, bad = 0;
+        int more = 1;
+        while (more && *p != '\0' && n < DUEL_OVERRIDE_MAX / 4) {
+            more = duel_list_next(&p, &item, &len);
+            memcpy(buf + at, item, len);
+            buf[at + len] = '\0';
+            sets[n++] = buf + at;
+            at += len + 1u;
+        }
+        if (duel_config_set_list(out, sets, n, &bad, msg, sizeof msg) != 0) {
+            snprintf(err, err_len, "[overrides] from %u: %s", cfg->over[k].from, msg);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int duel_config_add_override(duel_config *cfg, uint32_t g, const char *const *sets, uint32_t n, char *err,
+                             size_t err_len)
+{
+    char text[DUEL_OVERRIDE_MAX * 2];
+    size_t at = 0;
+    uint32_t k, j;
+    if (n == 0)
+        return 0;
+    for (k = 0; k < cfg->n_over && cfg->over[k].from <= g; k++)
+        ;
+    if (k > 0 && cfg->over[k - 1u].from == g) {
+        k--;
+        at = (size_t)snprintf(text, sizeof text, "%s", cfg->over[k].sets);
+    } else if (cfg->n_over == DUEL_MAX_OVERRIDES) {
+        snprintf(err, err_len, "the run has overrides from %d generations already, the most config.ini keeps: "
+                               "start a new run with the parameters wanted", DUEL_MAX_OVERRIDES);
+        return -1;
+    }
+    for (j = 0; j < n; j++) {
+        if (strchr(sets[j], ',') != NULL) {
+            snprintf(err, err_len, "'%s': a comma in an override's value", sets[j]);
+            return -1;
+        }
+        at += (size_t)snprintf(text + at, at < sizeof text ? sizeof text - at : 0, "%s%s", at ? ", " : "", sets[j]);
+    }
+    if (at >= DUEL_OVERRIDE_MAX) {
+        snprintf(err, err_len, "the overrides from generation %u take %zu characters, more than config.ini keeps "
+                               "(%d)", g, at, DUEL_OVERRIDE_MAX - 1);
+        return -1;
+    }
+    if (!(k < cfg->n_over && cfg->over[k].from == g)) {
+        for (j = cfg->n_over; j > k; j--)
+            cfg->over[j] = cfg->over[j - 1u];
+        cfg->n_over++;
+        cfg->over[k].from = g;
+    }
+    memcpy(cfg->over[k].sets, text, at + 1u);
+    return 0;
+}
+
 static int duel_set_in(duel_config *cfg, const char *section, const char *name, const char *value, char *err,
                        size_t err_len)
 {
     int r;
+    if (strcmp(section, "overrides") == 0)
+        return duel_over_set(cfg, name, value, err, err_len);
     if (strcmp(section, "run") == 0)
         r = neat_config_set_in(duel_run_keys, N_RUN, cfg, name, value, err, err_len);
     else if (strcmp(section, "coevolution") == 0)
@@ -369,8 +500,8 @@ static int duel_set_in(duel_config *cfg, const char *section, const char *name, 
     else if (strcmp(section, "opponents") == 0)
         r = duel_opp_set(&cfg->opp, name, value, err, err_len);
     else {
-        snprintf(err, err_len, "unknown section [%s] (expected [run], [coevolution], [neat], [world] or "
-                               "[opponents])", section);
+        snprintf(err, err_len, "unknown section [%s] (expected [run], [coevolution], [neat], [world], [opponents] "
+                               "or [overrides])", section);
         return -1;
     }
     if (r != 0 && strncmp(err, "unknown key", 11) == 0) {
@@ -423,6 +554,24 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
         snprintf(err, err_len, "[coevolution] random_fitness is the coevolution's control; a run against fixed "
                                "opponents ([opponents] play) has none");
         return -1;
+    }
+    if (cfg->n_over > 0) {
+        /* each line applies, and the parameters it makes are usable */
+        duel_config at;
+        uint32_t k;
+        char msg[400];
+        for (k = 0; k < cfg->n_over; k++) {
+            if (duel_config_at(cfg, cfg->over[k].from, &at, err, err_len) != 0)
+                return -1;
+            if (duel_config_check(&at, msg, sizeof msg) != 0) {
+                snprintf(err, err_len, "[overrides] from %u: %s", cfg->over[k].from, msg);
+                return -1;
+            }
+            if (at.neat.pop_size != cfg->neat.pop_size || at.neat.n_inputs != cfg->neat.n_inputs) {
+                snprintf(err, err_len, "[overrides] from %u: pop_size cannot change during a run", cfg->over[k].from);
+                return -1;
+            }
+        }
     }
     return duel_world_check(&cfg->world, err, err_len);
 }
@@ -536,5 +685,12 @@ void duel_config_dump(FILE *out, const duel_config *cfg)
         else
             fprintf(out, "\ngames = comparison:%u\n", cfg->opp.layouts);
         fprintf(out, "fitness = %s\n", cfg->opp.fitness == DUEL_FIT_WINS ? "wins" : "wins-losses");
+    }
+    if (cfg->n_over > 0) {
+        uint32_t k;
+        fprintf(out, "\n[overrides]\n; parameters changed from a generation on (resume --set): the sections above "
+                     "hold generation 0's\n");
+        for (k = 0; k < cfg->n_over; k++)
+            fprintf(out, "from %u = %s\n", cfg->over[k].from, cfg->over[k].sets);
     }
 }

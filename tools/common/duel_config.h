@@ -53,6 +53,16 @@ typedef struct duel_opponents {
  * (tools/neatcpp/: neatcpp_duel, docs/neat-cpp.md) runs */
 enum duel_reproduction { DUEL_REPRODUCE_LIBNEAT = 0, DUEL_REPRODUCE_NEAT_CPP = 1 };
 
+/* [overrides]: parameter changes a run takes from a generation on (resume --set records them here, so that
+ * config.ini describes the whole run and run --config RUN/config.ini plays it again); the other sections hold
+ * the values of generation 0. One line per generation: "from G = key=value, key=value". */
+#define DUEL_MAX_OVERRIDES 16
+#define DUEL_OVERRIDE_MAX 160
+typedef struct duel_override {
+    uint32_t from;                 /* the first generation played with it (at least 1) */
+    char sets[DUEL_OVERRIDE_MAX];  /* "key=value, ...": [neat] and [coevolution] keys only */
+} duel_override;
+
 typedef struct duel_config {
     uint32_t generations; /* [run] generations to play in all */
     uint32_t seed;        /* [run] */
@@ -64,6 +74,8 @@ typedef struct duel_config {
     duel_start start;     /* [neat] start */
     duel_rules world;     /* [world]: the duel's chosen rules (v1 by default) */
     duel_opponents opp;   /* [opponents] */
+    uint32_t n_over;      /* [overrides], in increasing generation order */
+    duel_override over[DUEL_MAX_OVERRIDES];
 } duel_config;
 
 /* The paper's values (Appendix A, section 5): 500 generations, seed 1. */
@@ -88,6 +100,17 @@ int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t 
  * in an INI file (neat_ini.h). 0, or -1 with err and *bad (if not NULL) the index of the refused one. */
 int duel_config_set_list(duel_config *cfg, const char *const *sets, uint32_t n, uint32_t *bad, char *err,
                          size_t err_len);
+
+/* cfg as played at generation g: every override from g or before applied, in order (out->n_over 0: the
+ * schedule is cfg's). 0, or -1 with err (an override that does not apply). */
+int duel_config_at(const duel_config *cfg, uint32_t g, duel_config *out, char *err, size_t err_len);
+/* Whether one --set assignment is a parameter a run takes from a generation on ([neat] but start, or
+ * [coevolution]): those are what [overrides] records. */
+int duel_config_set_is_param(const char *assignment);
+/* Adds sets (n of them, each a parameter assignment) to cfg's overrides from generation g: a new line, or
+ * the end of g's line. 0, or -1 with err (too many or too long; a comma in a value). */
+int duel_config_add_override(duel_config *cfg, uint32_t g, const char *const *sets, uint32_t n, char *err,
+                             size_t err_len);
 
 /* Every key of every section, in a form duel_config_load reads back to the
  * same configuration. */

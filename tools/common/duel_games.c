@@ -342,6 +342,11 @@ const neat_params *duel_games_params(const duel_games *dg)
     return &dg->p;
 }
 
+void duel_games_set_params(duel_games *dg, const neat_params *p)
+{
+    dg->p = *p;
+}
+
 int duel_games_set_rules(duel_games *dg, const duel_rules *r)
 {
     if (duel_rules_check(r, NULL, NULL) != DUEL_OK)

@@ -75,6 +75,8 @@ size_t duel_games_take(duel_games *dg, size_t max, size_t *from);
 /* count games played elsewhere, with their steps; err (0 if none) at game err_at of the batch. */
 void duel_games_remote_done(duel_games *dg, size_t count, uint64_t steps, int err, size_t err_at);
 const neat_params *duel_games_params(const duel_games *dg);
+/* The parameters networks are built with from the next batch on (a run's [overrides] between generations). */
+void duel_games_set_params(duel_games *dg, const neat_params *p);
 
 /* Totals since creation. */
 uint64_t duel_games_played(const duel_games *dg);

@@ -4,6 +4,9 @@
 
 #include "duel_runtag.h"
 
+/* the longest tag a run makes fits in what a checkpoint keeps */
+typedef char duel_tag_fits[DUEL_TAG_MAX <= NEAT_GAME_MAX ? 1 : -1];
+
 static size_t duel_put_u32(uint8_t *p, uint32_t v)
 {
     p[0] = (uint8_t)v;
@@ -34,10 +37,37 @@ int duel_run_tag(const duel_config *cfg, const duel_opp_id *opp, uint8_t buf[DUE
             at += duel_put_u32(buf + at, (uint32_t)(opp[k].id >> 32));
         }
     }
+    /* a run with [overrides] (resume --set): each generation and its changes, so that the checkpoint records the
+     * schedule it was played with; none, none written (every tag from before stays as it was) */
+    if (cfg->n_over > 0) {
+        memcpy(buf + at, "OVR1", 4);
+        at += 4;
+        at += duel_put_u32(buf + at, cfg->n_over);
+        for (k = 0; k < cfg->n_over; k++) {
+            size_t n = strlen(cfg->over[k].sets);
+            at += duel_put_u32(buf + at, cfg->over[k].from);
+            at += duel_put_u32(buf + at, (uint32_t)n);
+            memcpy(buf + at, cfg->over[k].sets, n);
+            at += n;
+        }
+    }
     *len = at;
     return 0;
 }
 
+size_t duel_run_tag_overrides(const uint8_t *tag, size_t len)
+{
+    /* the rules, "RUN1", train_layouts, the number of opponents n, and with n > 0 four u32 and n records of 12 */
+    size_t at = DUEL_RULES_BYTES + 12, n;
+    if (len < at || memcmp(tag + DUEL_RULES_BYTES, "RUN1", 4) != 0)
+        return len;
+    n = (size_t)tag[at - 4] | (size_t)tag[at - 3] << 8 | (size_t)tag[at - 2] << 16 | (size_t)tag[at - 1] << 24;
+    if (n > DUEL_MAX_OPPONENTS)
+        return len;
+    if (n > 0)
+        at += 16 + 12 * n;
+    return at + 4 <= len && memcmp(tag + at, "OVR1", 4) == 0 ? at : len;
+}
 int32_t duel_train_config(const duel_config *cfg, uint32_t g)
 {
     uint64_t keys[2];
@@ -56,6 +86,11 @@ int duel_coev_new(neat_coev **out, const duel_config *cfg, char *err, size_t err
     size_t len;
     int e;
     *out = NULL;
+    if (cfg->n_over > 0) {
+        snprintf(err, err_len, "[overrides] (parameters changed from a generation on): a schedule duel_evolve run "
+                               "and resume play; give the parameters of generation 0 here");
+        return 2;
+    }
     if (duel_start_genome(cfg, &g, err, err_len) != 0)
         return 2;
     st.genome = &g;

@@ -19,8 +19,11 @@ typedef struct duel_opp_id {
  * opponents and, for a run against them (opp: cfg->opp.n entries), its seed, [opponents] games and fitness, the
  * step mode, and each opponent. Resume compares it with what config.ini makes: a run's games cannot change under
  * it. 0, or NEAT_E_ARG (rules that do not encode). */
-#define DUEL_TAG_MAX (DUEL_RULES_BYTES + 32 + 12 * DUEL_MAX_OPPONENTS)
+#define DUEL_TAG_MAX (DUEL_RULES_BYTES + 32 + 12 * DUEL_MAX_OPPONENTS + 8 + (8 + DUEL_OVERRIDE_MAX) * DUEL_MAX_OVERRIDES)
 int duel_run_tag(const duel_config *cfg, const duel_opp_id *opp, uint8_t buf[DUEL_TAG_MAX], size_t *len);
+/* Where a run tag's overrides ("OVR1", then their count and each generation, length and text) start: the
+ * offset of "OVR1" after the rules, or len when it has none. */
+size_t duel_run_tag_overrides(const uint8_t *tag, size_t len);
 
 /* The food of generation g's training games: the rules' training items (DUEL_TRAINING), or ([run] train_layouts
  * = comparison) one of the 144 comparison layouts drawn from the run's seed and the generation (the same for any

@@ -383,7 +383,8 @@ static int duel_plan_build(duel_plan *p, const char *base, int from_dir, char *e
         /* the start topology opened and checked now, as each run will (start = best is made by the reference) */
         if (!m->start_best && m->cfg.opp.n == 0) {
             neat_coev *c = NULL;
-            int e = duel_coev_new(&c, &m->cfg, msg, sizeof msg);
+            duel_config first; /* generation 0's parameters: [overrides] come later in each run */
+            int e = duel_config_at(&m->cfg, 0, &first, msg, sizeof msg) != 0 ? 2 : duel_coev_new(&c, &first, msg, sizeof msg);
             neat_coev_free(c);
             if (e != 0) {
                 snprintf(err, err_len, "[method %s]: %s", m->name, msg);
