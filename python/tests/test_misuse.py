@@ -288,3 +288,14 @@ def test_evaluations_go_on_after_a_checkpoint_load() -> None:
     again = nd.Population.from_bytes(pop.to_bytes()).run(fit, 2)
     assert [r["evaluations"] for r in first + again] == [r["evaluations"] for r in whole] == [20, 40, 60, 80, 100]
     assert pop.run(fit, 1)[0]["evaluations"] == 80  # a second run of the same population goes on too
+
+
+def test_overrides_schedule_is_not_ignored(tmp_path: pathlib.Path) -> None:
+    """Issue 49 §3: a configuration with [overrides] (a resumed run's schedule) is refused by coevolution(), never
+    started with generation 0's parameters alone and the schedule dropped."""
+    ini = tmp_path / "o.ini"
+    ini.write_text("[neat]\npop_size = 16\n[overrides]\nfrom 3 = add_node_prob=0.05\n")
+    cfg = nd.DuelConfig.from_ini(ini)
+    assert "from 3 = add_node_prob=0.05" in cfg.to_ini()
+    with pytest.raises(nd.ParamError, match=r"\[overrides\]"):
+        cfg.coevolution()
