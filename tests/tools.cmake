@@ -180,7 +180,7 @@ foreach(check rundir lock bounds records outputs paths edits counters small)
 endforeach()
 
 # issue 49: data safety, third pass (tests/tools/safety3.sh)
-foreach(check runfiles dirs world plan scripts messages edits provenance)
+foreach(check runfiles dirs world plan scripts messages edits provenance records)
   add_test(NAME tools/safety3_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/safety3.sh $<TARGET_FILE:duel_evolve>
                    ${CMAKE_CURRENT_SOURCE_DIR}/tools/coev-small.ini ${NEAT_SAFETY_PLAN} ${check})

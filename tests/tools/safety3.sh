@@ -403,6 +403,37 @@ PY
   expect_bad "experiment: .*random-1/config.ini belongs to another plan" experiment report "$tmp/x2"
   [ ! -e "$tmp/x2/report" ] || fail "a report of several worlds was written"
   ;;
+records)
+  # §3: records edited or put in place of the run's own are detected against the checkpoint: a champion blob of a
+  # dominant swapped for another, a dominance.csv row edited or one the checkpoint lacks; resume repairs them
+  "$duel" run --config "$cfg" --out "$tmp/r" --generations 6 --quiet
+  [ "$(tail -n +2 "$tmp/r/dominance.csv" | wc -l)" -ge 2 ] || fail "fewer than 2 dominance levels: nothing tested"
+  "$duel" ladder "$tmp/r" --top --against idle > "$tmp/want.txt"
+  cp -r "$tmp/r" "$tmp/keep"
+  top=$(tail -1 "$tmp/r/dominance.csv" | cut -d, -f2) first=$(sed -n 2p "$tmp/r/dominance.csv" | cut -d, -f2)
+  topb=$tmp/r/champions/gen-$(printf %05d "$top").blob
+  cp "$tmp/r/champions/gen-$(printf %05d "$first").blob" "$topb"
+  expect_bad "r/champions/gen-$(printf %05d "$top").blob is not the checkpoint's dominant of level [0-9]* (a file put in its place): resume the run" \
+    ladder "$tmp/r" --top --against idle
+  expect_bad "is not the checkpoint's dominant" compare "$tmp/r" --against "$tmp/keep"
+  "$duel" resume "$tmp/r" --quiet || fail "resume"
+  cmp -s "$topb" "$tmp/keep/champions/gen-$(printf %05d "$top").blob" || fail "resume did not write the blob again"
+  grep -q "resume: champions/gen-$(printf %05d "$top").blob was not the dominant of level" "$tmp/r/log.txt" || fail "not logged"
+  "$duel" ladder "$tmp/r" --top --against idle | cmp -s - "$tmp/want.txt" || fail "the ladder after the repair"
+  # a row the checkpoint lacks (a run killed between its records and its checkpoint, or a row added by hand)
+  last=$(tail -1 "$tmp/r/dominance.csv")
+  n=$(($(wc -l < "$tmp/r/dominance.csv")))
+  printf '%s,5,%s 1:0\n' "$n" "${last#*,*,}" >> "$tmp/r/dominance.csv"
+  expect_bad "r/dominance.csv: $n levels, but the checkpoint has $((n - 1)): resume the run to repair it" \
+    ladder "$tmp/r" --top --against idle
+  "$duel" resume "$tmp/r" --quiet || fail "resume"
+  cmp -s "$tmp/r/dominance.csv" "$tmp/keep/dominance.csv" || fail "dominance.csv not rebuilt"
+  # an edited row: another generation for a level
+  sed -i "2s/^1,$first,/1,$((first + 1)),/" "$tmp/r/dominance.csv"
+  cp "$tmp/r/champions/gen-$(printf %05d "$first").blob" "$tmp/r/champions/gen-$(printf %05d $((first + 1))).blob" 2>/dev/null || true
+  expect_bad "r/dominance.csv: level 1 says generation $((first + 1)) .*, but the checkpoint's is generation $first" \
+    ladder "$tmp/r" --against idle
+  ;;
 *)
   fail "unknown check $what"
   ;;

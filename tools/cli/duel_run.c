@@ -1550,6 +1550,42 @@ static int duel_rebuild_dominance(duel_run *R)
         free(text);
         return 1;
     }
+    /* each dominant's blob is its genome's encoding: one put in its place (or lost) is written again */
+    for (k = 0; k < n && r == 0; k++) {
+        neat_dominant d;
+        const neat_params *np = neat_pop_params(neat_coev_pop(R->coev, 0));
+        uint8_t *want;
+        size_t wlen;
+        char name[64];
+        neat_coev_dominant(R->coev, k, &d);
+        snprintf(name, sizeof name, "champions/gen-%05u.blob", d.generation);
+        duel_path(path, sizeof path, R->dir, name);
+        wlen = neat_blob_size(d.genome);
+        want = (uint8_t *)malloc(wlen);
+        if (want == NULL || neat_blob_write_step(d.genome, np->n_inputs, np->n_outputs, np->net_step, want, wlen,
+                                                 &wlen) != 0) {
+            free(want);
+            free(text);
+            fprintf(stderr, "duel_evolve: resume: out of memory\n");
+            return 1;
+        }
+        if (duel_file_read(path, DUEL_GENOME_MAX, &have, &have_len) != 0 || have_len != wlen ||
+            memcmp(have, want, wlen) != 0) {
+            r = duel_file_replace(path, want, wlen) != 0;
+            if (r)
+                fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, duel_file_strerror(errno));
+            else
+                duel_log(R, "resume: %s was not the dominant of level %u: written again from the checkpoint", name,
+                         k + 1u);
+        }
+        free(have);
+        have = NULL;
+        free(want);
+    }
+    if (r) {
+        free(text);
+        return 1;
+    }
     duel_path(path, sizeof path, R->dir, "dominance.csv");
     /* written only when it differs: an intact file is left alone; what is not a file is not ours to replace */
     r = duel_file_read(path, DUEL_DOMINANCE_MAX_FILE, &have, &have_len);

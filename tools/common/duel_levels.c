@@ -1,8 +1,10 @@
 /* duel_levels.c - the dominants listed in dominance.csv, with their blobs from champions/. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "duel_ctrl.h"
+#include "neat_coev.h"
 #include "duel_dominance.h"
 #include "duel_levels.h"
 
@@ -47,8 +49,66 @@ int duel_levels_read(const char *dir, duel_level **out, uint32_t *n_out)
         }
     }
     free(rows);
+    if (duel_levels_check(dir, levels, n) != 0) {
+        duel_levels_free(levels, n);
+        return -1;
+    }
     *out = levels;
     *n_out = n;
+    return 0;
+}
+
+int duel_levels_check(const char *dir, const duel_level *levels, uint32_t n)
+{
+    char path[4200];
+    neat_coev *c = NULL;
+    const neat_params *np;
+    uint32_t doms, k;
+    int e;
+    snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
+    e = duel_ckpt_load("", path, &c);
+    if (e != 0)
+        return e < 0 ? -1 : 0; /* no checkpoint (a run copied without it): dominance.csv is all there is */
+    np = neat_pop_params(neat_coev_pop(c, 0));
+    doms = neat_coev_dominant_count(c);
+    for (k = 0; k < n || k < doms; k++) {
+        neat_dominant d;
+        uint8_t *want;
+        size_t len;
+        if (k >= doms || k >= n) {
+            fprintf(stderr, "duel_evolve: %s/dominance.csv: %u levels, but the checkpoint has %u: resume the run to "
+                            "repair it\n", dir, n, doms);
+            neat_coev_free(c);
+            return -1;
+        }
+        neat_coev_dominant(c, k, &d);
+        if (d.generation != levels[k].generation || d.pop != (uint32_t)(levels[k].pop[0] == 'B')) {
+            fprintf(stderr, "duel_evolve: %s/dominance.csv: level %u says generation %u (%s), but the checkpoint's "
+                            "is generation %u (%s): an edited or transplanted row; resume the run to rebuild it\n",
+                    dir, k + 1u, levels[k].generation, levels[k].pop, d.generation, d.pop ? "B" : "A");
+            neat_coev_free(c);
+            return -1;
+        }
+        len = neat_blob_size(d.genome);
+        want = (uint8_t *)malloc(len);
+        e = want == NULL ? NEAT_E_NOMEM
+                         : neat_blob_write_step(d.genome, np->n_inputs, np->n_outputs, np->net_step, want, len, &len);
+        if (e == 0 && (len != levels[k].ctrl.blob_len || memcmp(want, levels[k].ctrl.blob, len) != 0)) {
+            fprintf(stderr, "duel_evolve: %s/champions/gen-%05u.blob is not the checkpoint's dominant of level %u (a "
+                            "file put in its place): resume the run to write it again\n", dir, levels[k].generation,
+                    k + 1u);
+            e = -1;
+        } else if (e != 0) {
+            fprintf(stderr, "duel_evolve: %s: level %u: %s\n", dir, k + 1u, neat_strerror(e));
+            e = -1;
+        }
+        free(want);
+        if (e != 0) {
+            neat_coev_free(c);
+            return -1;
+        }
+    }
+    neat_coev_free(c);
     return 0;
 }
 

@@ -16,5 +16,9 @@ typedef struct duel_level {
  * level yet is an error. 0, or -1 after one line on stderr naming the file. */
 int duel_levels_read(const char *dir, duel_level **out, uint32_t *n);
 void duel_levels_free(duel_level *levels, uint32_t n);
+/* The levels against the run's checkpoint (when it has one): the same dominants, generation and population, and
+ * each blob the encoding of the checkpoint's dominant (an edited row, a row the checkpoint lacks, or a champion
+ * blob swapped for another is refused, and resume repairs it). 0, or -1 after one line. duel_levels_read calls it. */
+int duel_levels_check(const char *dir, const duel_level *levels, uint32_t n);
 
 #endif /* DUEL_LEVELS_H */
