@@ -241,6 +241,15 @@ dir/x.dot"
       [ ! -e "$tmp/mpi/checkpoint.bin" ] || fail "DUEL_MPI_WAIT=$v: a run was played"
     done
   fi
+  # every value echoed in a message has its control bytes escaped: one message stays one line, and no escape
+  # sequence reaches the terminal (arguments), or it is refused where it is read (an INI line)
+  expect_bad "play: --games takes 1 or 288, not '2\\\\x1b\[31m88'" play builtin:idle builtin:idle --games $'2\e[31m88'
+  msg=$("$duel" $'bo\ngus' 2>&1 > /dev/null || true)
+  [ "$(printf '%s\n' "$msg" | head -1)" = "duel_evolve: unknown command 'bo\x0agus'" ] || fail "unknown command: $msg"
+  expect_bad "run: unknown option '--bad\\\\x0ax'" run $'--bad\nx'
+  expect_bad "ladder: unknown option '--x\\\\x07'" ladder "$tmp/r" $'--x\a'
+  printf '[neat]\npop_size = 1\033[31m\n' > "$tmp/c.ini"
+  expect_bad "c.ini:2: a control character (byte 0x1b) at column 13" config --config "$tmp/c.ini" --dump
   ;;
 edits)
   # §3: one policy for edits. config.ini carries the run's seal: a hand edit of any key is refused (generations and

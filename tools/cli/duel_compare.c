@@ -179,7 +179,7 @@ int duel_cmd_compare(int argc, char **argv)
                 errno = 0;
                 t = strtoul(v, &end, 10);
                 if (*v < '0' || *v > '9' || *end != '\0' || errno || t > 256) {
-                    fprintf(stderr, "duel_evolve: compare: --threads takes 0 (every core) to 256, not '%s'\n", v);
+                    fprintf(stderr, "duel_evolve: compare: --threads takes 0 (every core) to 256, not '%s'\n", duel_esc(v));
                     goto out;
                 }
                 threads = (uint32_t)t;
@@ -191,7 +191,7 @@ int duel_cmd_compare(int argc, char **argv)
                 cache_path = v;
             }
         } else if (a[0] == '-') {
-            fprintf(stderr, "duel_evolve: compare: unknown option '%s' (%s)\n", a, DUEL_CMP_USAGE);
+            fprintf(stderr, "duel_evolve: compare: unknown option '%s' (%s)\n", duel_esc(a), DUEL_CMP_USAGE);
             goto out;
         } else if (in_against) {
             against[n_against++] = a;

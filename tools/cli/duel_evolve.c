@@ -6,6 +6,7 @@
 #include "duel.h"
 #include "neat.h"
 #include "duel_cli.h"
+#include "duel_text.h"
 #include "duel_mpi.h"
 
 static void duel_usage(FILE *f)
@@ -75,7 +76,7 @@ static int duel_dispatch(int argc, char **argv)
     for (i = 0; i < sizeof duel_commands / sizeof duel_commands[0]; i++)
         if (strcmp(argv[0], duel_commands[i].name) == 0)
             return duel_commands[i].run(argc - 1, argv + 1);
-    fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[0]);
+    fprintf(stderr, "duel_evolve: unknown command '%s'\n", duel_esc(argv[0]));
     return 2;
 }
 
@@ -116,7 +117,7 @@ int duel_evolve_main(int argc, char **argv)
                 return duel_mpi_finish(duel_stdout_status(argv[1], 0));
             return duel_mpi_finish(duel_stdout_status(argv[1], duel_commands[i].run(argc - 2, argv + 2)));
         }
-    fprintf(stderr, "duel_evolve: unknown command '%s'\n", argv[1]);
+    fprintf(stderr, "duel_evolve: unknown command '%s'\n", duel_esc(argv[1]));
     duel_usage(stderr);
     return duel_mpi_finish(2);
 }

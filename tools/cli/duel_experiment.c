@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_text.h"
 #include "duel_exp.h"
 #include "duel_plan.h"
 
@@ -20,7 +21,7 @@ static int duel_exp_u32(const char *opt, const char *v, uint32_t hi, uint32_t *o
     errno = 0;
     x = strtoul(v, &end, 10);
     if (*v < '0' || *v > '9' || *end != '\0' || errno || x > hi) {
-        fprintf(stderr, "duel_evolve: experiment: %s takes 0 (every core) to %u, not '%s'\n", opt, hi, v);
+        fprintf(stderr, "duel_evolve: experiment: %s takes 0 (every core) to %u, not '%s'\n", opt, hi, duel_esc(v));
         return -1;
     }
     *out = (uint32_t)x;
@@ -68,7 +69,7 @@ int duel_cmd_experiment(int argc, char **argv)
             continue;
         }
         if (!takes || (mode == 2) || (mode == 1 && (strcmp(a, "--out") == 0 || strcmp(a, "--set") == 0))) {
-            fprintf(stderr, "duel_evolve: experiment: unknown option '%s' here (duel_evolve experiment --help)\n", a);
+            fprintf(stderr, "duel_evolve: experiment: unknown option '%s' here (duel_evolve experiment --help)\n", duel_esc(a));
             free(sets);
             return 2;
         }

@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_text.h"
 
 typedef struct duel_help_entry {
     const char *command;
@@ -198,6 +199,6 @@ int duel_cli_missing_value(const char *command, const char *opt, const char *con
             fprintf(stderr, "duel_evolve: %s: %s needs a value\n", command, opt);
             return 2;
         }
-    fprintf(stderr, "duel_evolve: %s: unknown option '%s' (duel_evolve %s --help)\n", command, opt, command);
+    fprintf(stderr, "duel_evolve: %s: unknown option '%s' (duel_evolve %s --help)\n", command, duel_esc(opt), command);
     return 2;
 }

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include "duel_cli.h"
+#include "duel_text.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
 #include "duel_outputs.h"
@@ -556,7 +557,7 @@ int duel_dot_parse_min_weight(const char *cmd, const char *v, duel_dot_opts *o)
     errno = 0;
     w = strtod(v, &end);
     if (*v == '\0' || *end != '\0' || errno || !(w >= 0 && w <= 8)) { /* !(..) also refuses NaN */
-        fprintf(stderr, "duel_evolve: %s: --min-weight takes a number from 0 to 8, not '%s'\n", cmd, v);
+        fprintf(stderr, "duel_evolve: %s: --min-weight takes a number from 0 to 8, not '%s'\n", cmd, duel_esc(v));
         return -1;
     }
     o->min_weight = w;

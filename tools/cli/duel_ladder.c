@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_text.h"
 #include "duel_files.h"
 #include "duel_json.h"
 #include "duel_outputs.h"
@@ -97,14 +98,14 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
                 o->subset = 1; /* another world's ladder is not the run's ladder.csv */
             } else if (strcmp(a, "--levels") == 0) {
                 if (duel_ladder_levels(v, &o->lo, &o->hi) != 0) {
-                    fprintf(stderr, "duel_evolve: ladder: --levels takes L or L1-L2 (levels from 1), not '%s'\n", v);
+                    fprintf(stderr, "duel_evolve: ladder: --levels takes L or L1-L2 (levels from 1), not '%s'\n", duel_esc(v));
                     return -1;
                 }
                 o->subset = 1;
             } else {
                 if (duel_ladder_against(v, o) != 0) {
                     fprintf(stderr, "duel_evolve: ladder: --against takes built-in strategies separated by commas, "
-                                    "each once (idle, spinner, forager, hunter, forager-hunter), not '%s'\n", v);
+                                    "each once (idle, spinner, forager, hunter, forager-hunter), not '%s'\n", duel_esc(v));
                     return -1;
                 }
                 o->subset |= o->n_against != DUEL_N_BUILTINS;
@@ -114,7 +115,7 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
         } else if (a[0] != '-' && o->dir == NULL) {
             o->dir = a;
         } else {
-            fprintf(stderr, "duel_evolve: ladder: unknown option '%s' (%s)\n", a, DUEL_LADDER_USAGE);
+            fprintf(stderr, "duel_evolve: ladder: unknown option '%s' (%s)\n", duel_esc(a), DUEL_LADDER_USAGE);
             return -1;
         }
     }

@@ -239,11 +239,11 @@ int duel_cmd_log(int argc, char **argv)
     if (argc == 4 && strcmp(argv[0], "dump") == 0 && strcmp(argv[2], "--channel") == 0)
         return duel_log_dump_channel(argv[1], argv[3]);
     if (argc >= 1 && strcmp(argv[0], "info") != 0 && strcmp(argv[0], "dump") != 0) {
-        fprintf(stderr, "duel_evolve: unknown log command '%s' (info, dump)\n", argv[0]);
+        fprintf(stderr, "duel_evolve: unknown log command '%s' (info, dump)\n", duel_esc(argv[0]));
         return 2;
     }
     if (argc >= 3 && strcmp(argv[0], "dump") == 0 && strcmp(argv[2], "--channel") != 0) {
-        fprintf(stderr, "duel_evolve: log dump: unknown option '%s' (--channel C)\n", argv[2]);
+        fprintf(stderr, "duel_evolve: log dump: unknown option '%s' (--channel C)\n", duel_esc(argv[2]));
         return 2;
     }
     duel_log_usage();

@@ -25,7 +25,7 @@ static int duel_node_ms(const char *opt, const char *v, int lo, int *out)
     errno = 0;
     x = strtol(v, &end, 10);
     if (*v == '\0' || *end != '\0' || errno != 0 || x < lo || x > 3600000) {
-        fprintf(stderr, "duel_evolve: node: %s takes milliseconds in [%d, 3600000], not '%s'\n", opt, lo, v);
+        fprintf(stderr, "duel_evolve: node: %s takes milliseconds in [%d, 3600000], not '%s'\n", opt, lo, duel_esc(v));
         return -1;
     }
     *out = (int)x;
@@ -79,7 +79,7 @@ static int duel_node_controller_cmd(int argc, char **argv)
         i++;
         if (strcmp(opt, "--side") == 0) {
             if (strcmp(v, "west") != 0 && strcmp(v, "east") != 0) {
-                fprintf(stderr, "duel_evolve: node controller: --side takes west or east, not '%s'\n", v);
+                fprintf(stderr, "duel_evolve: node controller: --side takes west or east, not '%s'\n", duel_esc(v));
                 return 2;
             }
             side = strcmp(v, "west") == 0 ? 0 : 1;
@@ -92,7 +92,7 @@ static int duel_node_controller_cmd(int argc, char **argv)
             if (duel_node_ms(opt, v, 1, &timeout_ms))
                 return 2;
         } else {
-            fprintf(stderr, "duel_evolve: node controller: unknown option '%s' (see duel_evolve --help)\n", opt);
+            fprintf(stderr, "duel_evolve: node controller: unknown option '%s' (see duel_evolve --help)\n", duel_esc(opt));
             return 2;
         }
     }
@@ -169,7 +169,7 @@ static int duel_node_world_cmd(int argc, char **argv)
             errno = 0;
             k = strtol(v, &end, 10);
             if (*v == '\0' || *end != '\0' || errno || k < 0 || k >= DUEL_CONFIGS) {
-                fprintf(stderr, "duel_evolve: node world: bad food configuration '%s' (0..143 or training)\n", v);
+                fprintf(stderr, "duel_evolve: node world: bad food configuration '%s' (0..143 or training)\n", duel_esc(v));
                 return 2;
             }
             o.food_config = (int)k;
@@ -192,7 +192,7 @@ static int duel_node_world_cmd(int argc, char **argv)
         } else if (strcmp(opt, "--lcm-log") == 0) {
             log_path = v;
         } else {
-            fprintf(stderr, "duel_evolve: node world: unknown option '%s' (see duel_evolve --help)\n", opt);
+            fprintf(stderr, "duel_evolve: node world: unknown option '%s' (see duel_evolve --help)\n", duel_esc(opt));
             return 2;
         }
     }
@@ -249,7 +249,7 @@ int duel_cmd_node(int argc, char **argv)
     if (argc >= 1 && strcmp(argv[0], "world") == 0)
         return duel_node_world_cmd(argc - 1, argv + 1);
     if (argc >= 1) {
-        fprintf(stderr, "duel_evolve: unknown node '%s' (controller, world)\n", argv[0]);
+        fprintf(stderr, "duel_evolve: unknown node '%s' (controller, world)\n", duel_esc(argv[0]));
         return 2;
     }
     duel_node_usage();

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_text.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
 #include "duel_json.h"
@@ -141,7 +142,7 @@ int duel_cmd_play(int argc, char **argv)
         }
         if (strcmp(opt, "--games") == 0) {
             if (strcmp(argv[++i], "288") != 0 && strcmp(argv[i], "1") != 0) {
-                fprintf(stderr, "duel_evolve: play: --games takes 1 or 288, not '%s'\n", argv[i]);
+                fprintf(stderr, "duel_evolve: play: --games takes 1 or 288, not '%s'\n", duel_esc(argv[i]));
                 return 2;
             }
             games = atoi(argv[i]);
@@ -156,14 +157,14 @@ int duel_cmd_play(int argc, char **argv)
             errno = 0;
             k = strtol(v, &end, 10);
             if (*v == '\0' || *end != '\0' || errno || k < 0 || k >= DUEL_CONFIGS) {
-                fprintf(stderr, "duel_evolve: play: bad food configuration '%s' (0..143 or training)\n", v);
+                fprintf(stderr, "duel_evolve: play: bad food configuration '%s' (0..143 or training)\n", duel_esc(v));
                 return 2;
             }
             food = (int)k;
         } else if (strcmp(opt, "--side") == 0) {
             const char *v = argv[++i];
             if (strcmp(v, "west") != 0 && strcmp(v, "east") != 0) {
-                fprintf(stderr, "duel_evolve: play: --side takes west or east, not '%s'\n", v);
+                fprintf(stderr, "duel_evolve: play: --side takes west or east, not '%s'\n", duel_esc(v));
                 return 2;
             }
             a_west = strcmp(v, "west") == 0;
@@ -174,7 +175,7 @@ int duel_cmd_play(int argc, char **argv)
         } else if (strcmp(opt, "--world") == 0) {
             world_arg = argv[++i];
         } else {
-            fprintf(stderr, "duel_evolve: play: unknown option '%s' (see duel_evolve --help)\n", opt);
+            fprintf(stderr, "duel_evolve: play: unknown option '%s' (see duel_evolve --help)\n", duel_esc(opt));
             return 2;
         }
     }

@@ -35,7 +35,7 @@ static int duel_rc_int(const char *cmd, const char *opt, const char *v, long lo,
     errno = 0;
     k = strtol(v, &end, 10);
     if (*v == '\0' || *end != '\0' || errno || k < lo || k > hi) {
-        fprintf(stderr, "duel_evolve: %s: %s takes an integer from %ld to %ld, not '%s'\n", cmd, opt, lo, hi, v);
+        fprintf(stderr, "duel_evolve: %s: %s takes an integer from %ld to %ld, not '%s'\n", cmd, opt, lo, hi, duel_esc(v));
         return -1;
     }
     *out = (int)k;
@@ -397,7 +397,7 @@ int duel_cmd_render(int argc, char **argv)
         const char *opt = argv[i];
         if (opt[0] != '-') {
             if (n_pos == 2) {
-                fprintf(stderr, "duel_evolve: render: unexpected argument '%s' (a log, or two controllers)\n", opt);
+                fprintf(stderr, "duel_evolve: render: unexpected argument '%s' (a log, or two controllers)\n", duel_esc(opt));
                 return 2;
             }
             pos[n_pos++] = opt;
@@ -446,12 +446,12 @@ int duel_cmd_render(int argc, char **argv)
             const char *v = argv[++i];
             game_opts = 1;
             if (strcmp(v, "west") != 0 && strcmp(v, "east") != 0) {
-                fprintf(stderr, "duel_evolve: render: --side takes west or east, not '%s'\n", v);
+                fprintf(stderr, "duel_evolve: render: --side takes west or east, not '%s'\n", duel_esc(v));
                 return 2;
             }
             a_west = strcmp(v, "west") == 0;
         } else {
-            fprintf(stderr, "duel_evolve: render: unknown option '%s' (see duel_evolve --help)\n", opt);
+            fprintf(stderr, "duel_evolve: render: unknown option '%s' (see duel_evolve --help)\n", duel_esc(opt));
             return 2;
         }
     }

@@ -807,7 +807,7 @@ static int duel_parse_u32(const char *opt, const char *v, uint32_t lo, uint32_t 
     errno = 0;
     x = v != NULL ? strtoull(v, &end, 10) : 0;
     if (v == NULL || end == v || *end != '\0' || errno != 0 || x < lo || x > hi || v[0] == '-') {
-        fprintf(stderr, "duel_evolve: %s takes an integer in [%u, %u], not '%s'\n", opt, lo, hi, v ? v : "");
+        fprintf(stderr, "duel_evolve: %s takes an integer in [%u, %u], not '%s'\n", opt, lo, hi, duel_esc(v));
         return -1;
     }
     *out = (uint32_t)x;
@@ -1416,7 +1416,7 @@ static int duel_run_main(int argc, char **argv)
         } else {
             fprintf(stderr, "duel_evolve run: unknown option '%s' (usage: duel_evolve run --config FILE --out DIR "
                             "[--set key=value ...] [--seed S] [--generations N] [--threads T] [--quiet] [--json] "
-                            "[--record-champion-games])\n", a);
+                            "[--record-champion-games])\n", duel_esc(a));
             return 2;
         }
     }
@@ -1904,7 +1904,7 @@ static int duel_resume_main(int argc, char **argv)
         } else {
             fprintf(stderr, "duel_evolve resume: unknown option '%s' (usage: duel_evolve resume DIR [--generations "
                             "N [--shorten]] [--set key=value ...] [--threads T] [--quiet] [--json] "
-                            "[--record-champion-games])\n", a);
+                            "[--record-champion-games])\n", duel_esc(a));
             return 2;
         }
     }
@@ -2210,7 +2210,7 @@ int duel_cmd_config(int argc, char **argv)
             from_set = 1;
         } else {
             fprintf(stderr, "duel_evolve config: unknown option '%s' (usage: duel_evolve config --dump [--config "
-                            "FILE] [--set key=value ...])\n", argv[i]);
+                            "FILE] [--set key=value ...])\n", duel_esc(argv[i]));
             return 2;
         }
     }

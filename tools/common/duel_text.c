@@ -44,3 +44,11 @@ void duel_csv_field(FILE *f, const char *s)
     }
     fputc('"', f);
 }
+
+const char *duel_esc(const char *s)
+{
+    static char buf[DUEL_ESC_SLOTS][1024];
+    static unsigned next;
+    char *b = buf[next++ % DUEL_ESC_SLOTS];
+    return duel_text_escape(s != NULL ? s : "", b, sizeof buf[0]);
+}

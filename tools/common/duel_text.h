@@ -8,6 +8,11 @@
 /* s with every byte below 0x20 and 0x7f written as \xNN (and '\' as "\\"), cut to fit buf (cap >= 1). buf. */
 const char *duel_text_escape(const char *s, char *buf, size_t cap);
 
+/* duel_text_escape into one of DUEL_ESC_SLOTS buffers used in turn (of 1024 bytes): for the values echoed in one
+ * message, at most that many in one call; the main thread's messages only. */
+#define DUEL_ESC_SLOTS 4
+const char *duel_esc(const char *s);
+
 /* s as one CSV field (RFC 4180): as it is, or in double quotes (each '"' doubled) when it holds a comma, a
  * quote, a CR or a LF. */
 void duel_csv_field(FILE *f, const char *s);

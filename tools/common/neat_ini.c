@@ -86,6 +86,16 @@ static int ini_pass(const char *name, const char *text, size_t len, neat_ini_han
                      NEAT_INI_MAX_LINE);
             goto out;
         }
+        {
+            /* a control byte (a tab apart) is in no key or value: refused here, so that no message echoes it */
+            const char *q;
+            for (q = b; q < e; q++)
+                if (((unsigned char)*q < 0x20 && *q != '\t') || (unsigned char)*q == 0x7f) {
+                    snprintf(err, err_len, "%s:%u: a control character (byte 0x%02x) at column %ld", name, line,
+                             (unsigned)(unsigned char)*q, (long)(q - b) + 1);
+                    goto out;
+                }
+        }
         ini_trim(&b, &e);
         if (b == e || *b == ';' || *b == '#')
             continue;
