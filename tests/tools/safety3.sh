@@ -379,11 +379,14 @@ PY
     fail "--world v1"
   grep -q "note: A (.*out.genome) was made in world custom $id; played in world v1 as --world asks" "$tmp/note" ||
     fail "no note: $(cat "$tmp/note")"
-  # an opponent made in another world is refused before any game
+  # an opponent made in another world plays in the run's, and the run says so (stderr and log.txt)
   printf '[opponents]\nplay = %s\n' "$tmp/out.genome" > "$tmp/o.ini"
-  expect_bad "\[opponents\] .*out.genome: made in world custom $id, but this run plays in world v1" \
-    run --config "$cfg" --config "$tmp/o.ini" --out "$tmp/never"
-  [ ! -e "$tmp/never/generations.csv" ] || fail "games were played"
+  "$duel" run --config "$cfg" --config "$tmp/o.ini" --generations 1 --set pop_size=8 --out "$tmp/fo" --quiet 2> "$tmp/fo.err" ||
+    fail "a run against an opponent of another world: $(cat "$tmp/fo.err")"
+  grep -q "note: \[opponents\] .*out.genome was made in world custom $id; this run plays it in its own world, v1" "$tmp/fo.err" ||
+    fail "no note: $(cat "$tmp/fo.err")"
+  grep -q "run: \[opponents\] .*out.genome was made in world custom $id; played in the run's world, v1" "$tmp/fo/log.txt" ||
+    fail "not logged"
   # ladder and compare name the world and the step in every row
   "$duel" ladder "$tmp/p" --against idle --csv "$tmp/l.csv" > /dev/null
   head -1 "$tmp/l.csv" | grep -qx "level,generation,population,hidden,connections,idle_wins,idle_losses,total_wins,total_losses,world,step" ||

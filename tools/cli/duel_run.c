@@ -57,6 +57,7 @@ typedef struct duel_run {
     int log_failed;            /* log.txt could not be written: the run stops after the generation */
     double gen_secs;           /* this process's generations, in seconds */
     uint32_t first_applied;    /* 1 + the generation whose overrides were applied before the loop (0: none) */
+    char opp_note[4600];       /* an opponent made in another world than the run's: logged when the run starts */
 } duel_run;
 
 static double duel_now(void)
@@ -1067,14 +1068,14 @@ static int duel_load_opponents(duel_run *R, int copies)
             snprintf(path, sizeof path, "%s", spec);
         if (duel_cli_read_blob_origin(path, &blob, &len, &origin) != 0)
             return 2;
-        /* a champion is played in its own world: one made in another is no opponent of this run's games */
+        /* an opponent plays in the run's world: one made in another is said to be so, on stderr and in the log */
         if (!copies && origin.world_from != DUEL_ORIGIN_NONE && !duel_rules_equal(&origin.world, &R->cfg.world)) {
             char a[40], b[40];
-            fprintf(stderr, "duel_evolve: [opponents] %s: made in world %s, but this run plays in world %s: a "
-                            "champion is played in its own world (set [world] to it, or choose another opponent)\n",
+            fprintf(stderr, "duel_evolve: note: [opponents] %s was made in world %s; this run plays it in its own "
+                            "world, %s\n",
                     path, duel_world_label(&origin.world, a, sizeof a), duel_world_label(&R->cfg.world, b, sizeof b));
-            free(blob);
-            return 2;
+            snprintf(R->opp_note, sizeof R->opp_note, "[opponents] %s was made in world %s; played in the run's "
+                     "world, %s", path, a, b);
         }
         e = nrt_mem_required(blob, len, &need);
         mem = e == 0 ? malloc(need) : NULL;
@@ -1456,6 +1457,8 @@ static int duel_run_main(int argc, char **argv)
         duel_log(&R, "run: override %s", sets[k]);
     duel_start_words(&R, words, sizeof words);
     duel_log(&R, "run: %s", words);
+    if (R.opp_note[0] != '\0')
+        duel_log(&R, "run: %s", R.opp_note);
     return duel_go(&R);
 }
 

@@ -54,7 +54,7 @@ int duel_run_net_step(const char *run)
  * yet checked), with the genome parsed into g when it is one (g NULL: not
  * kept). 0, or -1 with the line in err. */
 static int duel_origin_of_bytes(const char *path, const uint8_t *buf, size_t len, duel_origin *o, neat_genome *g,
-                                uint32_t *ni, uint32_t *no, char *err, size_t err_len)
+                                uint32_t *ni, uint32_t *no, int want_world, char *err, size_t err_len)
 {
     char run[4200];
     int in_run = duel_ctrl_run_of(path, run, sizeof run);
@@ -86,7 +86,7 @@ static int duel_origin_of_bytes(const char *path, const uint8_t *buf, size_t len
         o->net_step = duel_run_net_step(run);
         o->step_from = DUEL_ORIGIN_RUN;
     }
-    if (in_run && o->world_from == DUEL_ORIGIN_NONE) {
+    if (in_run && want_world && o->world_from == DUEL_ORIGIN_NONE) {
         if (duel_run_world(run, &o->world) != 0) {
             snprintf(err, err_len, "%s: the world of its run %s cannot be read (above)", path, run);
             return -1;
@@ -112,7 +112,7 @@ int duel_ctrl_origin(const char *spec, duel_origin *o)
                 errno == EFBIG ? "larger than 64 MB" : duel_file_strerror(errno));
         return -1;
     }
-    r = duel_origin_of_bytes(spec, buf, len, o, NULL, NULL, NULL, err, sizeof err);
+    r = duel_origin_of_bytes(spec, buf, len, o, NULL, NULL, NULL, 1, err, sizeof err);
     free(buf);
     if (r != 0)
         fprintf(stderr, "duel_evolve: %s\n", err);
@@ -131,7 +131,8 @@ const char *duel_origin_step_text(const duel_origin *o)
     return duel_step_name(o->net_step);
 }
 
-int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, duel_origin *origin)
+/* duel_cli_read_blob_origin, the world of a file in a run looked up only when want_world */
+static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel_origin *origin, int want_world)
 {
     duel_origin own;
     duel_origin *o = origin != NULL ? origin : &own;
@@ -143,7 +144,7 @@ int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, due
         uint32_t ni, no;
         uint8_t *file = *blob;
         *blob = NULL;
-        r = duel_origin_of_bytes(path, file, *len, o, &g, &ni, &no, err, sizeof err);
+        r = duel_origin_of_bytes(path, file, *len, o, &g, &ni, &no, want_world, err, sizeof err);
         free(file);
         if (r != 0) {
             fprintf(stderr, "duel_evolve: %s\n", err);
@@ -169,7 +170,7 @@ int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, due
         errno = EFBIG;
     }
     if (r == 0) {
-        if (duel_origin_of_bytes(path, *blob, *len, o, NULL, NULL, NULL, err, sizeof err) == 0)
+        if (duel_origin_of_bytes(path, *blob, *len, o, NULL, NULL, NULL, want_world, err, sizeof err) == 0)
             return 0;
         fprintf(stderr, "duel_evolve: %s\n", err);
         free(*blob);
@@ -189,12 +190,29 @@ int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, due
     return -1;
 }
 
-int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
+int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, duel_origin *origin)
 {
-    return duel_cli_read_blob_origin(path, blob, len, NULL);
+    return duel_read_blob_in(path, blob, len, origin, origin != NULL);
 }
 
+int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
+{
+    return duel_read_blob_in(path, blob, len, NULL, 0);
+}
+
+static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world);
+
 int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
+{
+    return duel_ctrl_open_in(c, spec, 1);
+}
+
+int duel_cli_ctrl_open_run_champion(duel_cli_ctrl *c, const char *spec)
+{
+    return duel_ctrl_open_in(c, spec, 0);
+}
+
+static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world)
 {
     size_t size, need;
     int err;
@@ -211,7 +229,7 @@ int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec)
         c->origin.builtin = 1;
         return 0;
     }
-    if (duel_cli_read_blob_origin(spec, &c->blob, &size, &c->origin) != 0)
+    if (duel_read_blob_in(spec, &c->blob, &size, &c->origin, want_world) != 0)
         return -1;
     c->blob_len = size;
     err = nrt_mem_required(c->blob, size, &need);

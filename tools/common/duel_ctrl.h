@@ -65,6 +65,9 @@ int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, due
 /* Loads spec into c; on error prints one line naming the problem to stderr
  * and returns -1. */
 int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec);
+/* The same for a champion of a run whose world the caller knows (a run's own levels): its origin's world is not
+ * looked up (world_from stays NONE), which would read the run's checkpoint for every champion. */
+int duel_cli_ctrl_open_run_champion(duel_cli_ctrl *c, const char *spec);
 
 /* Coevolution checkpoints are a few MB at the paper's scale; a larger file than this is refused. */
 #define DUEL_CKPT_MAX ((size_t)1 << 30)

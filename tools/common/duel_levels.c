@@ -42,7 +42,7 @@ int duel_levels_read(const char *dir, duel_level **out, uint32_t *n_out)
         l->hidden = rows[k].hidden;
         l->conns = rows[k].conns;
         snprintf(blob, sizeof blob, "%s/champions/gen-%05u.blob", dir, l->generation);
-        if (duel_cli_ctrl_open(&l->ctrl, blob) != 0) {
+        if (duel_cli_ctrl_open_run_champion(&l->ctrl, blob) != 0) {
             duel_levels_free(levels, k);
             free(rows);
             return -1;
