@@ -440,6 +440,20 @@ records)
     ladder "$tmp/r" --top --against idle
   "$duel" resume "$tmp/r" --quiet || fail "resume"
   cmp -s "$tmp/r/dominance.csv" "$tmp/keep/dominance.csv" || fail "dominance.csv not rebuilt"
+  # strength.csv: each row names the champion it measured; a row from another run is measured again on resume,
+  # and a file written before the column goes on without it
+  "$duel" run --config "$cfg" --out "$tmp/s1" --generations 3 --set strength_every=1 --quiet
+  "$duel" run --config "$cfg" --out "$tmp/s2" --generations 3 --seed 9 --set strength_every=1 --quiet
+  head -1 "$tmp/s1/strength.csv" | grep -q ",forager-hunter_timeouts,champion$" || fail "strength.csv: no champion column"
+  cp "$tmp/s1/strength.csv" "$tmp/strength.keep"
+  sed -i "3s/.*/$(sed -n 3p "$tmp/s2/strength.csv")/" "$tmp/s1/strength.csv"
+  ! cmp -s "$tmp/s1/strength.csv" "$tmp/strength.keep" || fail "the two runs' rows are the same: nothing tested"
+  "$duel" resume "$tmp/s1" --quiet || fail "resume"
+  cmp -s "$tmp/s1/strength.csv" "$tmp/strength.keep" || fail "a transplanted strength row was kept"
+  grep -q "resume: strength.csv: generation 1's row was not of the run's champion" "$tmp/s1/log.txt" || fail "not logged"
+  sed -i 's/,[^,]*$//' "$tmp/s1/strength.csv"
+  "$duel" resume "$tmp/s1" --generations 4 --quiet || fail "resume of an older strength.csv"
+  [ "$(awk -F, '{print NF}' "$tmp/s1/strength.csv" | sort -u)" = 21 ] || fail "an older strength.csv mixed formats"
   # an edited row: another generation for a level
   sed -i "2s/^1,$first,/1,$((first + 1)),/" "$tmp/r/dominance.csv"
   cp "$tmp/r/champions/gen-$(printf %05d "$first").blob" "$tmp/r/champions/gen-$(printf %05d $((first + 1))).blob" 2>/dev/null || true

@@ -58,6 +58,7 @@ typedef struct duel_run {
     double gen_secs;           /* this process's generations, in seconds */
     uint32_t first_applied;    /* 1 + the generation whose overrides were applied before the loop (0: none) */
     char opp_note[4600];       /* an opponent made in another world than the run's: logged when the run starts */
+    int strength_old;          /* strength.csv is of the format without its champion column: rows go on so */
 } duel_run;
 
 static double duel_now(void)
@@ -306,7 +307,9 @@ fail:
 static const char *duel_s(uint32_t n);
 #define DUEL_STRENGTH_MAX_FILE (64u << 20) /* a 500-generation run measured every generation writes about 50 KB */
 
-static void duel_strength_header(char *row, size_t cap)
+/* strength.csv's header; since issue 49 it ends with the champion measured (the FNV-1a hash of its blob), so that
+ * a row is checked against the checkpoint: a file without the column (older) goes on without it */
+static void duel_strength_header(char *row, size_t cap, int with_champion)
 {
     size_t at = (size_t)snprintf(row, cap, "generation");
     int k;
@@ -314,7 +317,7 @@ static void duel_strength_header(char *row, size_t cap)
         const char *n = duel_builtin_name(k);
         at += (size_t)snprintf(row + at, cap - at, ",%s_wins,%s_losses,%s_draws,%s_timeouts", n, n, n, n);
     }
-    snprintf(row + at, cap - at, "\n");
+    snprintf(row + at, cap - at, "%s\n", with_champion ? ",champion" : "");
 }
 
 /* Generation g's row of strength.csv for the champion network blob: its games against every builtin. 0, or -1
@@ -340,7 +343,10 @@ static int duel_strength_row(duel_run *R, uint32_t g, const uint8_t *blob, size_
     for (k = 0; k < DUEL_N_BUILTINS; k++)
         at += (size_t)snprintf(row + at, cap - at, ",%u,%u,%u,%u", pairs[k].tally.wins_a, pairs[k].tally.wins_b,
                                pairs[k].tally.draws, pairs[k].tally.timeouts);
-    snprintf(row + at, cap - at, "\n");
+    if (R->strength_old)
+        snprintf(row + at, cap - at, "\n");
+    else
+        snprintf(row + at, cap - at, ",%016llx\n", (unsigned long long)duel_blob_hash(blob, len));
     return 0;
 }
 
@@ -364,7 +370,7 @@ static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ)
     duel_path(path, sizeof path, R->dir, "strength.csv");
     if (stat(path, &st) != 0 || st.st_size == 0) {
         char head[600];
-        duel_strength_header(head, sizeof head);
+        duel_strength_header(head, sizeof head, !R->strength_old);
         if (duel_file_append(path, head) != 0)
             goto fail;
     }
@@ -379,6 +385,43 @@ fail:
  * truncated file, a partial last line) is measured again from champions/gen-G.blob, which gives the same bytes;
  * one whose champion is gone too is refused with what works. Rows after g were cut already. 0, or the exit status
  * after one line. */
+/* 1 when hex (16 digits) names the blob of a champion of generation q: for a coevolution, one of the two
+ * populations' bests the checkpoint's Halls of Fame hold; for a run against fixed opponents (whose checkpoint keeps
+ * no earlier champion), its champions/gen-q.blob. 0 otherwise. */
+static int duel_strength_champion_ok(duel_run *R, uint32_t q, const char *hex)
+{
+    char want[17];
+    uint32_t p;
+    if (R->coev != NULL) {
+        const neat_params *np = neat_pop_params(neat_coev_pop(R->coev, 0));
+        for (p = 0; p < 2; p++) {
+            const neat_genome *h = q < neat_coev_hof_count(R->coev, p) ? neat_coev_hof(R->coev, p, q) : NULL;
+            size_t len = h != NULL ? neat_blob_size(h) : 0;
+            uint8_t *b = len > 0 ? (uint8_t *)malloc(len) : NULL;
+            int ok = b != NULL &&
+                     neat_blob_write_step(h, np->n_inputs, np->n_outputs, np->net_step, b, len, &len) == 0;
+            if (ok)
+                snprintf(want, sizeof want, "%016llx", (unsigned long long)duel_blob_hash(b, len));
+            free(b);
+            if (ok && strcmp(want, hex) == 0)
+                return 1;
+        }
+        return 0;
+    }
+    {
+        char path[4200], name[64];
+        uint8_t *b;
+        size_t len;
+        snprintf(name, sizeof name, "champions/gen-%05u.blob", q);
+        duel_path(path, sizeof path, R->dir, name);
+        if (duel_file_read(path, DUEL_GENOME_MAX, &b, &len) != 0)
+            return 0;
+        snprintf(want, sizeof want, "%016llx", (unsigned long long)duel_blob_hash(b, len));
+        free(b);
+        return strcmp(want, hex) == 0;
+    }
+}
+
 static int duel_rebuild_strength(duel_run *R, uint32_t g)
 {
     char path[4200], head[600], row[600], name[64];
@@ -396,7 +439,10 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
         fprintf(stderr, "duel_evolve: %s: %s: refusing to replace it\n", path, duel_file_strerror(errno));
         return 2;
     }
-    duel_strength_header(head, sizeof head);
+    /* the file's format: with the champion column (checked below) or, when it was written without, so on */
+    duel_strength_header(head, sizeof head, 0);
+    R->strength_old = have != NULL && have_len >= strlen(head) && memcmp(have, head, strlen(head)) == 0;
+    duel_strength_header(head, sizeof head, !R->strength_old);
     if ((mem = open_memstream(&text, &len)) == NULL) {
         free(have);
         fprintf(stderr, "duel_evolve: resume: out of memory\n");
@@ -417,6 +463,25 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
             }
             pos += n + 1;
         }
+        if (found != NULL && !R->strength_old) {
+            /* the row's champion must be the run's: one of generation q's bests in the checkpoint (a fixed run's
+             * checkpoint keeps none: its champion blob) */
+            const char *comma = found + found_len - 1;
+            char got[17];
+            while (comma > found && *comma != ',')
+                comma--;
+            if ((size_t)(found + found_len - 1 - comma) == 17) {
+                memcpy(got, comma + 1, 16);
+                got[16] = '\0';
+            } else {
+                got[0] = '\0';
+            }
+            if (duel_strength_champion_ok(R, q, got) != 1) {
+                duel_log(R, "resume: strength.csv: generation %u's row was not of the run's champion (%s): measured "
+                            "again", q, got[0] != '\0' ? got : "no champion column");
+                found = NULL;
+            }
+        }
         if (found != NULL) {
             fwrite(found, 1, found_len, mem);
             continue;
@@ -430,6 +495,20 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
                                 "%s (%s): restore either, or resume with --set strength_every=0 to measure "
                                 "nothing more\n",
                         path, q, name, duel_file_strerror(errno));
+                fclose(mem);
+                free(text);
+                free(have);
+                return 2;
+            }
+        }
+        {
+            char hex[17];
+            snprintf(hex, sizeof hex, "%016llx", (unsigned long long)duel_blob_hash(blob, blen));
+            if (R->coev != NULL && duel_strength_champion_ok(R, q, hex) != 1) {
+                fprintf(stderr, "duel_evolve: %s/%s is not one of generation %u's bests in the checkpoint (a file put "
+                                "in its place): restore it, or resume with --set strength_every=0 to measure nothing "
+                                "more\n", R->dir, name, q);
+                free(blob);
                 fclose(mem);
                 free(text);
                 free(have);

@@ -581,6 +581,7 @@ typedef struct rep_strength {
     const rep_run *r;
     const char *path;
     int bad, any;
+    int champion; /* the file being read ends each row with its champion column */
 } rep_strength;
 
 static int rep_strength_line(void *ud, uint32_t line, char *text)
@@ -595,7 +596,9 @@ static int rep_strength_line(void *ud, uint32_t line, char *text)
             const char *n = duel_builtin_name(k);
             at += (size_t)snprintf(want + at, sizeof want - at, ",%s_wins,%s_losses,%s_draws,%s_timeouts", n, n, n, n);
         }
-        if (strcmp(text, want) != 0) {
+        /* since issue 49 a run's strength.csv ends with the champion measured; the report keeps the columns before */
+        x->champion = strncmp(text, want, strlen(want)) == 0 && strcmp(text + strlen(want), ",champion") == 0;
+        if (strcmp(text, want) != 0 && !x->champion) {
             fprintf(stderr, "duel_evolve: experiment: %s:1: not a strength.csv of this version\n", x->path);
             x->bad = 1;
             return -1;
@@ -604,6 +607,11 @@ static int rep_strength_line(void *ud, uint32_t line, char *text)
             fprintf(x->f, "method,run,%s\n", want);
         x->any = 1;
         return 0;
+    }
+    if (x->champion) {
+        char *comma = strrchr(text, ',');
+        if (comma != NULL)
+            *comma = '\0';
     }
     fprintf(x->f, "%s,%u,%s\n", x->R->p->m[x->r->method].name, x->r->k, text);
     return 0;
