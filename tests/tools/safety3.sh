@@ -248,6 +248,8 @@ dir/x.dot"
   [ "$(printf '%s\n' "$msg" | head -1)" = "duel_evolve: unknown command 'bo\x0agus'" ] || fail "unknown command: $msg"
   expect_bad "run: unknown option '--bad\\\\x0ax'" run $'--bad\nx'
   expect_bad "ladder: unknown option '--x\\\\x07'" ladder "$tmp/r" $'--x\a'
+  expect_bad "--set hof_opponents=.*: hof_opponents: a control character (byte 0x1b) in its value" \
+    config --dump --set $'hof_opponents=6\e[31m'
   printf '[neat]\npop_size = 1\033[31m\n' > "$tmp/c.ini"
   expect_bad "c.ini:2: a control character (byte 0x1b) at column 13" config --config "$tmp/c.ini" --dump
   ;;

@@ -485,6 +485,17 @@ static int duel_set_in(duel_config *cfg, const char *section, const char *name, 
                        size_t err_len)
 {
     int r;
+    const char *c;
+    /* a control byte in a value (--set: an INI line holding one is refused as it is read): start and play name it
+     * themselves, every other key here */
+    if (!(strcmp(section, "neat") == 0 && strcmp(name, "start") == 0) &&
+        !(strcmp(section, "opponents") == 0 && strcmp(name, "play") == 0))
+        for (c = value; *c != '\0'; c++)
+            if ((unsigned char)*c < 0x20 || (unsigned char)*c == 0x7f) {
+                snprintf(err, err_len, "%s: a control character (byte 0x%02x) in its value", name,
+                         (unsigned)(unsigned char)*c);
+                return -1;
+            }
     if (strcmp(section, "overrides") == 0)
         return duel_over_set(cfg, name, value, err, err_len);
     if (strcmp(section, "run") == 0)
