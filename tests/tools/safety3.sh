@@ -248,6 +248,10 @@ dir/x.dot"
   [ "$(printf '%s\n' "$msg" | head -1)" = "duel_evolve: unknown command 'bo\x0agus'" ] || fail "unknown command: $msg"
   expect_bad "run: unknown option '--bad\\\\x0ax'" run $'--bad\nx'
   expect_bad "ladder: unknown option '--x\\\\x07'" ladder "$tmp/r" $'--x\a'
+  # a champion path is echoed escaped (a file whose name holds a newline is still played: tools/safety_small)
+  expect_bad "duel_evolve: .*no\\\\x0afile.blob: cannot open: No such file or directory" play "$tmp/no"$'\n'"file.blob" builtin:idle
+  printf 'NEATGENM' > "$tmp/cut"$'\r'".genome"
+  expect_bad "cut\\\\x0d.genome: not a valid genome file" play "$tmp/cut"$'\r'".genome" builtin:idle
   expect_bad "--set hof_opponents=.*: hof_opponents: a control character (byte 0x1b) in its value" \
     config --dump --set $'hof_opponents=6\e[31m'
   printf '[neat]\npop_size = 1\033[31m\n' > "$tmp/c.ini"

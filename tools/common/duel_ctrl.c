@@ -8,6 +8,7 @@
 #include "neat_coev.h"
 #include "duel_config.h"
 #include "duel_files.h"
+#include "duel_text.h"
 #include "duel_world_cfg.h"
 
 #define DUEL_BLOB_MAX (NRT_HEADER_SIZE + NRT_CONN_SIZE * 65535u)
@@ -108,7 +109,7 @@ int duel_ctrl_origin(const char *spec, duel_origin *o)
         return 0;
     }
     if (duel_file_read(spec, DUEL_GENOME_MAX, &buf, &len) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", spec, errno == ENOENT ? "open" : "read",
+        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", duel_esc(spec), errno == ENOENT ? "open" : "read",
                 errno == EFBIG ? "larger than 64 MB" : duel_file_strerror(errno));
         return -1;
     }
@@ -156,7 +157,7 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
         r = *blob == NULL ? NEAT_E_NOMEM : neat_blob_write_step(&g, ni, no, o->net_step, *blob, *len, len);
         neat_genome_free(&g, NULL);
         if (r != 0) {
-            fprintf(stderr, "duel_evolve: %s: the genome has no blob: %s\n", path, neat_strerror(r));
+            fprintf(stderr, "duel_evolve: %s: the genome has no blob: %s\n", duel_esc(path), neat_strerror(r));
             free(*blob);
             *blob = NULL;
             *len = 0;
@@ -181,12 +182,12 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
     *blob = NULL;
     *len = 0;
     if (r == -1)
-        fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", duel_esc(path), strerror(errno));
     else if (errno == EFBIG)
-        fprintf(stderr, "duel_evolve: %s: larger than any champion blob (%lu bytes at most)\n", path,
+        fprintf(stderr, "duel_evolve: %s: larger than any champion blob (%lu bytes at most)\n", duel_esc(path),
                 (unsigned long)DUEL_BLOB_MAX);
     else
-        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), strerror(errno));
     return -1;
 }
 
@@ -222,7 +223,8 @@ static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world)
     if (strncmp(spec, "builtin:", 8) == 0) {
         int b = duel_builtin_parse(spec + 8);
         if (b < 0) {
-            fprintf(stderr, "duel_evolve: %s: unknown builtin (idle, spinner, forager, hunter, forager-hunter)\n", spec);
+            fprintf(stderr, "duel_evolve: %s: unknown builtin (idle, spinner, forager, hunter, forager-hunter)\n",
+                    duel_esc(spec));
             return -1;
         }
         c->ctrl.builtin = b;
@@ -238,12 +240,13 @@ static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world)
         err = c->mem == NULL ? NRT_E_NOMEM : nrt_load(&c->net, c->blob, size, c->mem, need);
     }
     if (err) {
-        fprintf(stderr, "duel_evolve: %s: not a valid champion blob: %s\n", spec, nrt_strerror(err));
+        fprintf(stderr, "duel_evolve: %s: not a valid champion blob: %s\n", duel_esc(spec), nrt_strerror(err));
         duel_cli_ctrl_close(c);
         return -1;
     }
     if (c->net.n_inputs != DUEL_N_INPUTS || c->net.n_outputs != DUEL_N_OUTPUTS) {
-        fprintf(stderr, "duel_evolve: %s: a network with %u inputs and %u outputs, not the duel's %d and %d\n", spec,
+        fprintf(stderr, "duel_evolve: %s: a network with %u inputs and %u outputs, not the duel's %d and %d\n",
+                duel_esc(spec),
                 (unsigned)c->net.n_inputs, (unsigned)c->net.n_outputs, DUEL_N_INPUTS, DUEL_N_OUTPUTS);
         duel_cli_ctrl_close(c);
         return -1;

@@ -6,6 +6,7 @@
 
 #include "duel_files.h"
 #include "duel_genome_file.h"
+#include "duel_text.h"
 
 int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint32_t *n_outputs)
 {
@@ -15,7 +16,7 @@ int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint3
     int r = duel_file_read(path, DUEL_GENOME_MAX, &buf, &len);
     neat_genome_init(g);
     if (r != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", path, r == -1 ? "open" : "read",
+        fprintf(stderr, "duel_evolve: %s: cannot %s: %s\n", duel_esc(path), r == -1 ? "open" : "read",
                 errno == EFBIG ? "larger than 64 MB" : duel_file_strerror(errno));
         return -1;
     }
@@ -36,12 +37,14 @@ int duel_genome_parse_origin(const char *path, const uint8_t *buf, size_t len, n
                              uint32_t *n_outputs, neat_genome_origin *origin, char *err, size_t err_len)
 {
     size_t off = 0;
+    char esc[1100]; /* its own buffer: a parse may run off the main thread (duel_esc's are the main thread's) */
     int e = neat_genome_load_origin(g, n_inputs, n_outputs, origin, buf, len, NULL, &off);
     if (e == NEAT_E_NOMEM)
-        snprintf(err, err_len, "%s: cannot load the genome: %s", path, neat_strerror(e));
+        snprintf(err, err_len, "%s: cannot load the genome: %s", duel_text_escape(path, esc, sizeof esc),
+                 neat_strerror(e));
     else if (e)
-        snprintf(err, err_len, "%s: not a valid genome file: %s at byte %lu", path, neat_strerror(e),
-                 (unsigned long)off);
+        snprintf(err, err_len, "%s: not a valid genome file: %s at byte %lu", duel_text_escape(path, esc, sizeof esc),
+                 neat_strerror(e), (unsigned long)off);
     return e ? -1 : 0;
 }
 
