@@ -396,10 +396,9 @@ static int duel_strength_champion_ok(duel_run *R, uint32_t q, const char *hex)
         const neat_params *np = neat_pop_params(neat_coev_pop(R->coev, 0));
         for (p = 0; p < 2; p++) {
             const neat_genome *h = q < neat_coev_hof_count(R->coev, p) ? neat_coev_hof(R->coev, p, q) : NULL;
-            size_t len = h != NULL ? neat_blob_size(h) : 0;
-            uint8_t *b = len > 0 ? (uint8_t *)malloc(len) : NULL;
-            int ok = b != NULL &&
-                     neat_blob_write_step(h, np->n_inputs, np->n_outputs, np->net_step, b, len, &len) == 0;
+            uint8_t *b = NULL;
+            size_t len = 0;
+            int ok = h != NULL && duel_genome_blob(h, np->n_inputs, np->n_outputs, np->net_step, &b, &len) == 0;
             if (ok)
                 snprintf(want, sizeof want, "%016llx", (unsigned long long)duel_blob_hash(b, len));
             free(b);
@@ -1642,11 +1641,7 @@ static int duel_rebuild_dominance(duel_run *R)
         neat_coev_dominant(R->coev, k, &d);
         snprintf(name, sizeof name, "champions/gen-%05u.blob", d.generation);
         duel_path(path, sizeof path, R->dir, name);
-        wlen = neat_blob_size(d.genome);
-        want = (uint8_t *)malloc(wlen);
-        if (want == NULL || neat_blob_write_step(d.genome, np->n_inputs, np->n_outputs, np->net_step, want, wlen,
-                                                 &wlen) != 0) {
-            free(want);
+        if (duel_genome_blob(d.genome, np->n_inputs, np->n_outputs, np->net_step, &want, &wlen) != 0) {
             free(text);
             fprintf(stderr, "duel_evolve: resume: out of memory\n");
             return 1;

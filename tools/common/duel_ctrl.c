@@ -152,15 +152,10 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
             *len = 0;
             return -1;
         }
-        *len = neat_blob_size(&g);
-        *blob = (uint8_t *)malloc(*len);
-        r = *blob == NULL ? NEAT_E_NOMEM : neat_blob_write_step(&g, ni, no, o->net_step, *blob, *len, len);
+        r = duel_genome_blob(&g, ni, no, o->net_step, blob, len);
         neat_genome_free(&g, NULL);
         if (r != 0) {
             fprintf(stderr, "duel_evolve: %s: the genome has no blob: %s\n", duel_esc(path), neat_strerror(r));
-            free(*blob);
-            *blob = NULL;
-            *len = 0;
             return -1;
         }
         return 0;

@@ -1,4 +1,4 @@
-/* duel_genome_file.c - champion genome files as the tools read, check and write them, every error one line naming the file and the byte. */
+/* duel_genome_file.c - champion genome files as the tools read, check and write them (every error one line naming the file and the byte), and a genome as a blob. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -68,4 +68,19 @@ int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs,
         fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
     free(buf);
     return r;
+}
+
+int duel_genome_blob(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, int net_step, uint8_t **blob,
+                     size_t *len)
+{
+    int e;
+    *len = neat_blob_size(g);
+    *blob = (uint8_t *)malloc(*len);
+    e = *blob == NULL ? NEAT_E_NOMEM : neat_blob_write_step(g, n_inputs, n_outputs, net_step, *blob, *len, len);
+    if (e != NEAT_OK) {
+        free(*blob);
+        *blob = NULL;
+        *len = 0;
+    }
+    return e;
 }

@@ -89,10 +89,7 @@ int duel_levels_check(const char *dir, const duel_level *levels, uint32_t n)
             neat_coev_free(c);
             return -1;
         }
-        len = neat_blob_size(d.genome);
-        want = (uint8_t *)malloc(len);
-        e = want == NULL ? NEAT_E_NOMEM
-                         : neat_blob_write_step(d.genome, np->n_inputs, np->n_outputs, np->net_step, want, len, &len);
+        e = duel_genome_blob(d.genome, np->n_inputs, np->n_outputs, np->net_step, &want, &len);
         if (e == 0 && (len != levels[k].ctrl.blob_len || memcmp(want, levels[k].ctrl.blob, len) != 0)) {
             fprintf(stderr, "duel_evolve: %s/champions/gen-%05u.blob is not the checkpoint's dominant of level %u (a "
                             "file put in its place): resume the run to write it again\n", dir, levels[k].generation,

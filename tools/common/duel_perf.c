@@ -42,7 +42,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
     duel_config cfg;
     struct stat st;
     neat_coev *c;
-    uint32_t gen, doms, k;
+    uint32_t gen, k;
     int e;
 
     memset(r, 0, sizeof *r);
@@ -72,7 +72,6 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         if (e != 0)
             return -1;
         gen = neat_coev_generation(c);
-        doms = neat_coev_dominant_count(c);
         e = duel_ckpt_world(c, path, &r->world);
         neat_coev_free(c);
         if (e != 0)
@@ -81,7 +80,6 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         gen = duel_perf_csv_generations(dir, pre);
         if (gen == UINT32_MAX)
             return -1;
-        doms = UINT32_MAX;
         r->world = cfg.world;
     }
     if (gen < cfg.generations) {
@@ -89,13 +87,9 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
                 gen, cfg.generations);
         return -1;
     }
+    /* the levels as the checkpoint holds them (duel_levels_check: their number, each row and blob) */
     if (duel_levels_read(dir, &r->levels, &r->n_levels) != 0)
         return -1;
-    if (doms != UINT32_MAX && r->n_levels != doms) {
-        fprintf(stderr, "duel_evolve: %s%s/dominance.csv: %u levels, but the checkpoint has %u: resume the run "
-                        "to repair it\n", pre, dir, r->n_levels, doms);
-        return -1;
-    }
     r->hash = (uint64_t *)malloc(r->n_levels * sizeof *r->hash);
     if (r->hash == NULL) {
         fprintf(stderr, "duel_evolve: %sout of memory\n", pre);
