@@ -169,6 +169,7 @@ static int rep_read_run(rep *R, rep_run *r)
     lc.r = r;
     lc.path = path;
     lc.ok = 0;
+    lc.fields = 0; /* set by the header line, which rep_lines reads first */
     e = rep_lines(path, rep_ladder_line, &lc);
     if (e == -1)
         fprintf(stderr, "duel_evolve: experiment: %s/%s: %s (continue the experiment to play its ladder)\n", R->dir,
