@@ -46,10 +46,11 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static const char *const channels[] = {DUEL_CH_STATE, DUEL_CH_SENSE_WEST, DUEL_CH_SENSE_EAST, DUEL_CH_MOTOR_WEST,
-                                           DUEL_CH_MOTOR_EAST};
+                                           DUEL_CH_MOTOR_EAST, DUEL_CH_NET};
     duel_sense_t s;
     duel_motor_t m;
     duel_state_t st;
+    duel_net_t nt;
     char msg[400];
     int n = 0;
     if (size == 0)
@@ -61,6 +62,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         duel_motor_t_decode_cleanup(&m);
     if (duel_msg_decode_state(data + 1, size - 1, &st, msg, sizeof msg) == DUEL_NODE_OK)
         duel_state_t_decode_cleanup(&st);
+    if (duel_msg_decode_net(data + 1, size - 1, &nt, msg, sizeof msg) == DUEL_NODE_OK) {
+        /* accepted only with a side and a step that exist */
+        if ((nt.side != 0 && nt.side != 1) || nt.step < DUEL_NET_T_BUILTIN || nt.step > DUEL_NET_T_PROPAGATE)
+            __builtin_trap();
+        duel_net_t_decode_cleanup(&nt);
+    }
     {
         /* the world message: accepted only with rules that make a game and their identity */
         duel_rules r;
@@ -72,7 +79,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
      * input reaches the handlers */
     fm_ctrl.err = 0;
     fm_world.err = 0;
-    if (lcm_publish(fm_lcm, channels[data[0] % 5], data + 1, (unsigned)(size - 1)) != 0)
+    if (lcm_publish(fm_lcm, channels[data[0] % 6], data + 1, (unsigned)(size - 1)) != 0)
         abort();
     while (n++ < 16 && lcm_handle_timeout(fm_lcm, 0) > 0)
         ;

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "duel_motor_t.h"
+#include "duel_net_t.h"
 #include "duel_sense_t.h"
 #include "duel_state_t.h"
 #include "hostile_msgs.h"
@@ -67,9 +68,18 @@ static void hm_state_head(hm_buf *b)
     hm_be32(b, 0xffffffffu);
 }
 
+/* net_t up to its string: fingerprint, version 1, side, step */
+static void hm_net_head(hm_buf *b, int side, int step)
+{
+    hm_be64(b, (uint64_t)__duel_net_t_get_hash());
+    hm_be32(b, DUEL_NET_T_VERSION);
+    hm_u8(b, (uint32_t)side);
+    hm_u8(b, (uint32_t)(uint8_t)step);
+}
+
 int hostile_count(void)
 {
-    return 13;
+    return 15;
 }
 
 int hostile_get(int i, hostile_msg *m)
@@ -167,6 +177,18 @@ int hostile_get(int i, hostile_msg *m)
         m->channel = "DUEL_MOTOR_WEST";
         hm_motor_head(&b, 0, 4);
         b.n -= 20;
+        break;
+    case 13: /* what plays a side, its name claiming -5 bytes */
+        m->name = "net-negative";
+        m->channel = "DUEL_NET";
+        hm_net_head(&b, 0, 0);
+        hm_string(&b, -5, NULL, 0);
+        break;
+    case 14: /* a step mode that does not exist (a recorded game would say it) */
+        m->name = "net-bad-step";
+        m->channel = "DUEL_NET";
+        hm_net_head(&b, 1, 7);
+        hm_string(&b, 2, "x", 2);
         break;
     default:
         return -1;

@@ -95,18 +95,29 @@ bad-input)
   : > "$tmp/empty.lcm"
   expect_bad "empty.lcm: empty file, not an LCM event log" log dump "$tmp/empty.lcm"
   expect_bad "missing.lcm: cannot open" log info "$tmp/missing.lcm"
-  # a message of format version 99 (the first event is the state of step 0: 28-byte event header,
-  # "DUEL_STATE", 8-byte fingerprint, then the big-endian version) is refused, not guessed at
+  # a message of format version 99 is refused, not guessed at. The first event is the west net message
+  # (28-byte event header, "DUEL_NET", 8-byte fingerprint, then the big-endian version)
   cp "$tmp/g.lcm" "$tmp/v99.lcm"
-  printf '\x63' | dd of="$tmp/v99.lcm" bs=1 seek=49 conv=notrunc status=none
-  expect_bad "v99.lcm: event 0 at offset 0: DUEL_STATE: duel.state_t format version 99, this reader knows only version 1" \
+  printf '\x63' | dd of="$tmp/v99.lcm" bs=1 seek=47 conv=notrunc status=none
+  expect_bad "v99.lcm: event 0 at offset 0: DUEL_NET: duel.net_t format version 99, this reader knows only version 1" \
     log dump "$tmp/v99.lcm"
   expect_bad "format version 99" log info "$tmp/v99.lcm"
-  expect_bad "format version 99" log dump "$tmp/v99.lcm" --channel DUEL_STATE
+  expect_bad "format version 99" log dump "$tmp/v99.lcm" --channel DUEL_NET
+  # the first state message (its channel name, then fingerprint and version)
+  cp "$tmp/g.lcm" "$tmp/v99s.lcm"
+  at=$(grep -abo DUEL_STATE "$tmp/g.lcm" | head -1 | cut -d: -f1)
+  printf '\x63' | dd of="$tmp/v99s.lcm" bs=1 seek=$((at + 10 + 8 + 3)) conv=notrunc status=none
+  expect_bad "v99s.lcm: event 2 at offset [0-9]*: DUEL_STATE: duel.state_t format version 99, this reader knows only version 1" \
+    log dump "$tmp/v99s.lcm"
+  expect_bad "format version 99" log dump "$tmp/v99s.lcm" --channel DUEL_STATE
   # another fingerprint on the channel (another type, or another layout of it)
   cp "$tmp/g.lcm" "$tmp/fp.lcm"
   printf '\x00' | dd of="$tmp/fp.lcm" bs=1 seek=40 conv=notrunc status=none
-  expect_bad "fp.lcm: event 0 at offset 0: DUEL_STATE: LCM fingerprint 0x[0-9a-f]* is not duel.state_t's" log dump "$tmp/fp.lcm"
+  expect_bad "fp.lcm: event 0 at offset 0: DUEL_NET: LCM fingerprint 0x[0-9a-f]* is not duel.net_t's" log dump "$tmp/fp.lcm"
+  cp "$tmp/g.lcm" "$tmp/fps.lcm"
+  printf '\x00' | dd of="$tmp/fps.lcm" bs=1 seek=$((at + 10 + 2)) conv=notrunc status=none
+  expect_bad "fps.lcm: event 2 at offset [0-9]*: DUEL_STATE: LCM fingerprint 0x[0-9a-f]* is not duel.state_t's" \
+    log dump "$tmp/fps.lcm"
   # channels
   expect_bad "unknown channel 'FOO'" log dump "$tmp/g.lcm" --channel FOO
   "$duel" log dump "$tmp/g.lcm" --channel DUEL_STATE > /dev/null
@@ -333,7 +344,7 @@ hostile-bus)
   cmp "$tmp/world.txt" <(sed '$d' "$tmp/play.txt") || fail "the game under attack differs from play"
   "$duel" log dump "$tmp/w.lcm" > "$tmp/w.csv"
   cmp "$tmp/p.csv" "$tmp/w.csv" || fail "the recorded game under attack differs from play --trace"
-  grep -q "node world: ignored [0-9]* malformed messages; the first: DUEL_MOTOR_" "$tmp/world.err" ||
+  grep -Eq "node world: ignored [0-9]* malformed messages; the first: DUEL_(MOTOR_|NET)" "$tmp/world.err" ||
     fail "world: $(cat "$tmp/world.err")"
   grep -q "node controller west: ignored [0-9]* malformed messages; the first: DUEL_" "$tmp/cw.txt" ||
     fail "west: $(cat "$tmp/cw.txt")"

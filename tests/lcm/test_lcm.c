@@ -412,6 +412,8 @@ static void test_memq_forfeit(void **state)
     duel_node_world nw;
     tl_quitter q;
     duel_motor_t hello;
+    duel_net_t net;
+    char quitter[] = "quitter";
     nrt_q15 zero[DUEL_N_OUTPUTS] = {0, 0, 0};
     lcm_subscription_t *sub;
     lcm_t *lcm;
@@ -431,7 +433,14 @@ static void test_memq_forfeit(void **state)
     assert_int_equal(duel_node_ctrl_start(&cw, lcm, &a.net, DUEL_WEST, "w"), 0);
     sub = lcm_subscribe(lcm, DUEL_CH_SENSE_EAST, tl_quitter_on_sense, &q);
     assert_int_equal(duel_node_ctrl_hello(&cw), 0);
-    duel_lcm_motor_fill(&hello, DUEL_EAST, DUEL_MOTOR_T_HELLO, zero, "quitter");
+    /* the quitter says what it is, then hello, as a controller node does */
+    memset(&net, 0, sizeof net);
+    net.version = DUEL_NET_T_VERSION;
+    net.side = DUEL_EAST;
+    net.step = DUEL_NET_T_SYNC;
+    net.controller = quitter;
+    assert_int_equal(duel_net_t_publish(lcm, DUEL_CH_NET, &net), 0);
+    duel_lcm_motor_fill(&hello, DUEL_EAST, DUEL_MOTOR_T_HELLO, zero, quitter);
     assert_int_equal(duel_motor_t_publish(lcm, DUEL_CH_MOTOR_EAST, &hello), 0);
     t0 = duel_node_now_ms();
     assert_int_equal(duel_node_world_play(&nw), DUEL_NODE_E_TIMEOUT);
@@ -441,6 +450,10 @@ static void test_memq_forfeit(void **state)
     assert_int_equal(r.res.outcome, DUEL_WEST_WINS);
     assert_int_equal(r.res.steps, 10);
     assert_non_null(strstr(r.msg, "east controller did not answer step 10 within 150 ms"));
+    /* what plays each side, from the net messages sent with the hellos */
+    assert_true(r.have_net[0] && r.have_net[1]);
+    assert_int_equal(r.net_step[0], a.net.step == NRT_STEP_PROPAGATE ? DUEL_NET_T_PROPAGATE : DUEL_NET_T_SYNC);
+    assert_int_equal(r.net_step[1], DUEL_NET_T_SYNC);
     while (!cw.game_over && lcm_handle_timeout(lcm, 100) > 0) {
     }
     assert_true(cw.game_over);
@@ -500,7 +513,7 @@ static void test_log_truncated(void **state)
     e.net = &b.net;
     tl_path(path, sizeof path, "full");
     tl_path(cut, sizeof cut, "cut");
-    assert_int_equal(duel_lcm_record_game(path, &w, &e, 100, "a", "b", &res, err, sizeof err), 0);
+    assert_int_equal(duel_lcm_record_game(path, NULL, &w, &e, 100, "a", "b", &res, err, sizeof err), 0);
     memset(&tr, 0, sizeof tr);
     assert_int_equal(duel_play(&w, &e, 100, &res, tl_trace_fn, &tr), DUEL_OK);
     assert_int_equal(duel_lcm_game_read(&g, path, err, sizeof err), 0);
@@ -562,7 +575,7 @@ static void test_log_unknown_version(void **state)
     e.net = &b.net;
     tl_path(path, sizeof path, "v");
     tl_path(bad, sizeof bad, "v99");
-    assert_int_equal(duel_lcm_record_game(path, &w, &e, DUEL_TRAINING, "a", "b", &res, err, sizeof err), 0);
+    assert_int_equal(duel_lcm_record_game(path, NULL, &w, &e, DUEL_TRAINING, "a", "b", &res, err, sizeof err), 0);
     assert_true(res.steps > 20);
     /* the 21st state message (step 20): its version field follows the 8-byte fingerprint */
     assert_int_equal(duel_lcm_reader_open(&rd, path, err, sizeof err), 0);
@@ -605,7 +618,7 @@ static void test_replay_frames(void **state)
     w.net = &a.net;
     e.net = &b.net;
     tl_path(path, sizeof path, "replay");
-    assert_int_equal(duel_lcm_record_game(path, &w, &e, 3, "net-a", "net-b", &res, err, sizeof err), 0);
+    assert_int_equal(duel_lcm_record_game(path, NULL, &w, &e, 3, "net-a", "net-b", &res, err, sizeof err), 0);
     memset(&tr, 0, sizeof tr);
     assert_int_equal(duel_play(&w, &e, 3, &res, tl_trace_fn, &tr), DUEL_OK);
     memset(&r, 0, sizeof r);

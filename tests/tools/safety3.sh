@@ -393,6 +393,30 @@ PY
     fail "no note: $(cat "$tmp/fo.err")"
   grep -q "run: \[opponents\] .*out.genome was made in world custom $id; played in the run's world, v1" "$tmp/fo/log.txt" ||
     fail "not logged"
+  # --trace names the world and each side's step in every row; its LCM log records them, so log dump equals it
+  "$duel" play "$tmp/out.genome" builtin:idle --food 7 --trace "$tmp/t.csv" --lcm-log "$tmp/t.lcm" > /dev/null
+  head -1 "$tmp/t.csv" | grep -q ",food_mask,event,world_id,west_step,east_step$" || fail "trace header: $(head -1 "$tmp/t.csv")"
+  [ "$(tail -n +2 "$tmp/t.csv" | grep -cv ",$id,propagate,builtin$")" -eq 0 ] || fail "trace rows: $(sed -n 2p "$tmp/t.csv")"
+  "$duel" log dump "$tmp/t.lcm" | cmp - "$tmp/t.csv" || fail "log dump differs from the trace"
+  "$duel" log info "$tmp/t.lcm" | grep -qx "network step: west propagate, east builtin" || fail "log info: no step"
+  "$duel" log info "$tmp/t.lcm" | grep -qx "world: custom $id (its rules in the log's world message)" || fail "log info: no world"
+  "$duel" render "$tmp/t.lcm" --out "$tmp/frames-log" --every 300 > "$tmp/render-log.txt"
+  grep -qx "world custom (identity $id); network step: west propagate, east builtin" "$tmp/render-log.txt" ||
+    fail "render of the log: $(cat "$tmp/render-log.txt")"
+  # the blob, out of any run, is played in v1 and says so in the trace too (east: --side east)
+  "$duel" play "$tmp/out.blob" builtin:idle --food 7 --side east --trace "$tmp/t2.csv" 2> /dev/null > /dev/null
+  v1id=$("$duel" play builtin:idle builtin:idle --json | sed 's/.*"world_id":"\([0-9a-f]*\)".*/\1/')
+  sed -n 2p "$tmp/t2.csv" | grep -q ",$v1id,builtin,propagate$" || fail "blob trace: $(sed -n 2p "$tmp/t2.csv")"
+  # a run's recorded champion games are played in its world and name both networks' step
+  "$duel" run --config "$cfg" --out "$tmp/rg" --generations 2 --set net_step=propagate --set world.food_range=300 \
+    --record-champion-games --quiet
+  "$duel" log info "$tmp/rg/games/gen-00001-west.lcm" > "$tmp/rg.txt"
+  grep -qx "world: custom $id (its rules in the log's world message)" "$tmp/rg.txt" &&
+    grep -qx "network step: west propagate, east propagate" "$tmp/rg.txt" || fail "recorded game: $(cat "$tmp/rg.txt")"
+  # a log from before the net messages: the trace says it does not know
+  # (the first 6000 bytes of a game: its complete steps are dumped, and the command says the rest is missing)
+  "$duel" log dump "$(dirname "$0")/../fuzz/corpus/lcm_log/game-start.lcm" > "$tmp/old.csv" 2> /dev/null || true
+  sed -n 2p "$tmp/old.csv" | grep -q ",b43972def416b019,unknown,unknown$" || fail "an old log's steps: $(sed -n 2p "$tmp/old.csv")"
   # ladder and compare name the world and the step in every row
   "$duel" ladder "$tmp/p" --against idle --csv "$tmp/l.csv" > /dev/null
   head -1 "$tmp/l.csv" | grep -qx "level,generation,population,hidden,connections,idle_wins,idle_losses,total_wins,total_losses,world,step" ||

@@ -12,7 +12,7 @@ static void duel_log_usage(void)
 {
     fprintf(stderr, "usage: duel_evolve log info FILE.lcm\n"
                     "       duel_evolve log dump FILE.lcm [--channel C]\n"
-                    "  C: DUEL_STATE, DUEL_SENSE_WEST, DUEL_SENSE_EAST, DUEL_MOTOR_WEST or DUEL_MOTOR_EAST (docs/lcm.md)\n");
+                    "  C: DUEL_STATE, DUEL_SENSE_WEST, DUEL_SENSE_EAST, DUEL_MOTOR_WEST, DUEL_MOTOR_EAST or DUEL_NET (docs/lcm.md)\n");
 }
 
 static int duel_log_cmp_channel(const void *a, const void *b)
@@ -53,6 +53,11 @@ static int duel_log_info(const char *path)
             printf("world: %s (its rules in the log's world message)\n",
                    duel_world_label(&g->rules, label, sizeof label));
         }
+        if (g->step[0] != DUEL_TRACE_STEP_UNKNOWN || g->step[1] != DUEL_TRACE_STEP_UNKNOWN)
+            printf("network step: west %s, east %s\n", duel_trace_step_name(g->step[0]),
+                   duel_trace_step_name(g->step[1]));
+        else
+            printf("network step: not recorded (a log without net messages)\n");
         printf("complete steps: %lu\n", (unsigned long)g->rows);
         if (g->hellos != 0)
             printf("controller hellos: %llu\n", (unsigned long long)g->hellos);
@@ -81,6 +86,7 @@ static int duel_log_info(const char *path)
 static int duel_log_dump_trace(const char *path)
 {
     duel_lcm_game *g;
+    duel_trace tr;
     char err[4600];
     uint32_t t;
     int status = duel_lcm_game_read(&g, path, err, sizeof err);
@@ -90,9 +96,13 @@ static int duel_log_dump_trace(const char *path)
         duel_lcm_game_free(g);
         return 2;
     }
+    tr.f = stdout;
+    tr.world_id = duel_rules_id(&g->rules);
+    tr.step[0] = g->step[0];
+    tr.step[1] = g->step[1];
     duel_trace_header(stdout);
     for (t = 0; t < g->rows; t++)
-        duel_trace_row(stdout, &g->w[t], (const nrt_q15(*)[DUEL_N_INPUTS])g->in[t],
+        duel_trace_row(&tr, &g->w[t], (const nrt_q15(*)[DUEL_N_INPUTS])g->in[t],
                        (const nrt_q15(*)[DUEL_N_OUTPUTS])g->out[t], &g->ev[t + 1]);
     duel_lcm_game_free(g);
     if (fflush(stdout) != 0 || ferror(stdout))
@@ -165,9 +175,11 @@ static int duel_log_dump_channel(const char *path, const char *channel)
         kind = 1;
     else if (strcmp(channel, DUEL_CH_MOTOR_WEST) == 0 || strcmp(channel, DUEL_CH_MOTOR_EAST) == 0)
         kind = 2;
+    else if (strcmp(channel, DUEL_CH_NET) == 0)
+        kind = 3;
     else {
         fprintf(stderr, "duel_evolve: log dump: unknown channel '%s' (DUEL_STATE, DUEL_SENSE_WEST, DUEL_SENSE_EAST, "
-                        "DUEL_MOTOR_WEST, DUEL_MOTOR_EAST)\n", channel);
+                        "DUEL_MOTOR_WEST, DUEL_MOTOR_EAST, DUEL_NET)\n", duel_esc(channel));
         return 2;
     }
     if (duel_lcm_reader_open(&rd, path, err, sizeof err) != 0) {
@@ -183,8 +195,10 @@ static int duel_log_dump_channel(const char *path, const char *channel)
             else if (kind == 1)
                 printf("step,side,input0,input1,input2,input3,input4,input5,input6,input7,input8,input9,input10,"
                        "input11,input12\n");
-            else
+            else if (kind == 2)
                 printf("step,side,output0,output1,output2,controller\n");
+            else
+                printf("side,step,controller\n");
         }
         if (kind == 0) {
             duel_state_t m;
@@ -201,6 +215,15 @@ static int duel_log_dump_channel(const char *path, const char *channel)
                 for (i = 0; i < DUEL_N_INPUTS; i++)
                     printf(",%d", m.input[i]);
                 printf("\n");
+            }
+        } else if (kind == 3) {
+            duel_net_t m;
+            bad = duel_msg_decode_net(e.data, e.len, &m, msg, sizeof msg);
+            if (!bad) {
+                printf("%d,%d,", m.side, m.step);
+                duel_log_csv_string(m.controller);
+                printf("\n");
+                duel_net_t_decode_cleanup(&m);
             }
         } else {
             duel_motor_t m;

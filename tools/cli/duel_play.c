@@ -233,6 +233,7 @@ int duel_cmd_play(int argc, char **argv)
         duel_result r;
         duel_lcm_game_rec lg;
         duel_out trace;
+        duel_trace tr;
         FILE *tf = NULL;
         if (trace_path != NULL) {
             /* written as TRACE.tmp, put in place only when the game and its log are */
@@ -243,6 +244,11 @@ int duel_cmd_play(int argc, char **argv)
                 return 2;
             }
             tf = trace.f;
+            /* every row names the world and how each side stepped */
+            tr.f = tf;
+            tr.world_id = duel_rules_id(&world);
+            tr.step[0] = duel_trace_step_of(a_west ? &a.ctrl : &b.ctrl);
+            tr.step[1] = duel_trace_step_of(a_west ? &b.ctrl : &a.ctrl);
             duel_trace_header(tf);
         }
         if (lcm_path != NULL) {
@@ -258,8 +264,9 @@ int duel_cmd_play(int argc, char **argv)
                 return 2;
             }
             lg.next = tf ? duel_trace_row : NULL;
-            lg.next_ud = tf;
+            lg.next_ud = &tr;
             duel_lcm_game_rec_world(&lg, &world);
+            duel_lcm_game_rec_nets(&lg, a_west ? &a.ctrl : &b.ctrl, a_west ? &b.ctrl : &a.ctrl);
             err = a_west ? duel_play_rules(&world, &a.ctrl, &b.ctrl, food, &r, duel_lcm_game_rec_step, &lg)
                          : duel_play_rules(&world, &b.ctrl, &a.ctrl, food, &r, duel_lcm_game_rec_step, &lg);
             if (duel_lcm_game_rec_close(&lg, err == 0, lerr, sizeof lerr) != 0 && err == 0) {
@@ -267,8 +274,8 @@ int duel_cmd_play(int argc, char **argv)
                 rc = 1;
             }
         } else {
-            err = a_west ? duel_play_rules(&world, &a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, tf)
-                         : duel_play_rules(&world, &b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, tf);
+            err = a_west ? duel_play_rules(&world, &a.ctrl, &b.ctrl, food, &r, tf ? duel_trace_row : NULL, &tr)
+                         : duel_play_rules(&world, &b.ctrl, &a.ctrl, food, &r, tf ? duel_trace_row : NULL, &tr);
         }
         if (tf != NULL) {
             if (err != 0 || rc != 0) {

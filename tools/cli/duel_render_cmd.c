@@ -18,6 +18,7 @@
 #include "duel_text.h"
 #include "duel_render.h"
 #include "duel_replay.h"
+#include "duel_trace.h"
 #include "duel_world_cfg.h"
 
 #define DUEL_RC_PATH 4096
@@ -577,6 +578,9 @@ int duel_cmd_render(int argc, char **argv)
                (unsigned long long)duel_rules_id(&rep.rules));
         if (n_pos == 2)
             printf("; network step: west %s, east %s", step_w, step_e);
+        else if (rep.step[0] != DUEL_TRACE_STEP_UNKNOWN || rep.step[1] != DUEL_TRACE_STEP_UNKNOWN)
+            printf("; network step: west %s, east %s", duel_trace_step_name(rep.step[0]),
+                   duel_trace_step_name(rep.step[1])); /* as the log's net messages say */
         printf("\n");
         if (every == 1)
             printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every step and the final state)\n",

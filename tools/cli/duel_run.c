@@ -252,7 +252,8 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
         return -1;
     if (R->record_games &&
         duel_lcm_record_champion_games(R->dir, rep->generation, rep->champion_pop, neat_coev_champion(R->coev),
-                                       neat_coev_hof(R->coev, rep->champion_pop ^ 1u, rep->generation), np) != 0)
+                                       neat_coev_hof(R->coev, rep->champion_pop ^ 1u, rep->generation), np,
+                                       &R->cfg.world) != 0)
         return -1;
 
     duel_path(path, sizeof path, R->dir, "generations.csv");
@@ -1362,7 +1363,8 @@ static int duel_dir_is_runs(const char *dir, char *what, size_t cap)
     /* a run writes config.ini before anything else it keeps: files of a run's names without it are someone
      * else's (a user's generations.csv) */
     if (ok && first[0] != '\0' && access(path, F_OK) != 0) {
-        snprintf(what, cap, "holds '%s' but no config.ini of a run", first);
+        char esc[1100];
+        snprintf(what, cap, "holds '%s' but no config.ini of a run", duel_text_escape(first, esc, sizeof esc));
         ok = 0;
     }
     if (ok && duel_file_read(path, 1u << 20, &text, &len) == 0) {

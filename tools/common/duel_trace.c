@@ -15,7 +15,24 @@ void duel_trace_header(FILE *f)
         for (i = 0; i < DUEL_N_OUTPUTS; i++)
             fprintf(f, ",%s_out%d", duel_side_names[s], i);
     }
-    fprintf(f, ",food_mask,event\n");
+    fprintf(f, ",food_mask,event,world_id,west_step,east_step\n");
+}
+
+int duel_trace_step_of(const duel_controller *c)
+{
+    if (c->net == NULL)
+        return DUEL_TRACE_STEP_BUILTIN;
+    return c->net->step == NRT_STEP_PROPAGATE ? DUEL_TRACE_STEP_PROPAGATE : DUEL_TRACE_STEP_SYNC;
+}
+
+const char *duel_trace_step_name(int step)
+{
+    switch (step) {
+    case DUEL_TRACE_STEP_BUILTIN: return "builtin";
+    case DUEL_TRACE_STEP_SYNC: return "sync";
+    case DUEL_TRACE_STEP_PROPAGATE: return "propagate";
+    default: return "unknown";
+    }
 }
 
 /* heading in radians in (-pi, pi] */
@@ -27,10 +44,11 @@ static double duel_heading_rad(duel_angle a)
     return (double)(int32_t)a * (pi / 2147483648.0);
 }
 
-void duel_trace_row(void *file, const duel_world *w, const nrt_q15 in[2][DUEL_N_INPUTS],
+void duel_trace_row(void *ud, const duel_world *w, const nrt_q15 in[2][DUEL_N_INPUTS],
                     const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev)
 {
-    FILE *f = (FILE *)file;
+    const duel_trace *tr = (const duel_trace *)ud;
+    FILE *f = tr->f;
     int s, i, first = 1;
     fprintf(f, "%u", (unsigned)w->t);
     for (s = 0; s < 2; s++) {
@@ -57,5 +75,6 @@ void duel_trace_row(void *file, const duel_world *w, const nrt_q15 in[2][DUEL_N_
     case DUEL_TIMEOUT: fprintf(f, "%stimeout", first ? "" : ";"); break;
     default: break;
     }
-    fprintf(f, "\n");
+    fprintf(f, ",%016llx,%s,%s\n", (unsigned long long)tr->world_id, duel_trace_step_name(tr->step[0]),
+            duel_trace_step_name(tr->step[1]));
 }

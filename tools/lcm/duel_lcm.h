@@ -74,6 +74,9 @@ int duel_lcm_game_rec_open(duel_lcm_game_rec *g, const char *path, int food_conf
                            const char *east, char *err, size_t err_len);
 /* The world message of rules, first (nothing for world v1). */
 void duel_lcm_game_rec_world(duel_lcm_game_rec *g, const duel_rules *rules);
+/* What plays each side (one net message each, before the first state): a
+ * builtin, or a network and its step mode. */
+void duel_lcm_game_rec_nets(duel_lcm_game_rec *g, const duel_controller *west, const duel_controller *east);
 /* duel_trace_fn: ud is the duel_lcm_game_rec. */
 void duel_lcm_game_rec_step(void *ud, const duel_world *w, const nrt_q15 in[2][DUEL_N_INPUTS],
                             const nrt_q15 out[2][DUEL_N_OUTPUTS], const duel_event *ev);
@@ -94,15 +97,17 @@ typedef struct duel_node_world_result {
     int forfeit;          /* DUEL_STATE_T_FORFEIT_* */
     char name[2][DUEL_NODE_NAME_MAX + 1];
     char msg[512];        /* what went wrong, when the return is not 0 */
-    uint32_t ignored;     /* motor messages ignored: they failed checked decoding (a forgery, or damage) */
+    uint32_t ignored;     /* motor and net messages ignored: they failed checked decoding (a forgery, or damage) */
     char ignored_msg[320]; /* the first of them, and why */
+    int have_net[2];      /* a net message of the side arrived before the game (a controller of this version) */
+    int net_step[2];      /* its step: DUEL_NET_T_BUILTIN, _SYNC or _PROPAGATE */
 } duel_node_world_result;
 
 typedef struct duel_node_world {
     lcm_t *lcm;
     const duel_node_world_opts *o;
     duel_node_world_result *r;
-    lcm_subscription_t *sub[2];
+    lcm_subscription_t *sub[2], *sub_net;
     int32_t step;                   /* the step whose motor messages are awaited; -1 before the game */
     int hello[2], have[2];
     nrt_q15 out[2][DUEL_N_OUTPUTS];
@@ -167,6 +172,7 @@ typedef struct duel_lcm_game {
     duel_rules rules;                    /* the world: a world message before the first state, else v1 */
     int have_world;                      /* a world message was read */
     char name[2][DUEL_NODE_NAME_MAX + 1];
+    int step[2];                         /* DUEL_TRACE_STEP_*: the side's first net message, else UNKNOWN */
     int started;                         /* a state of step 0 was read */
     int over;                            /* the final state (an outcome) was read */
     uint32_t final_step;                 /* its step */
@@ -189,9 +195,11 @@ int duel_lcm_game_read(duel_lcm_game **g, const char *path, char *err, size_t er
 void duel_lcm_game_free(duel_lcm_game *g);
 
 /* ---- commands (duel_node_cmd.c, duel_log_cmd.c) and run's recording ---- */
-/* Plays west against east on food_config into the log at path (named by
- * names). 0, or -1 with one line in err. */
-int duel_lcm_record_game(const char *path, duel_controller *west, duel_controller *east, int food_config,
-                         const char *west_name, const char *east_name, duel_result *res, char *err, size_t err_len);
+/* Plays west against east on food_config in the world of rules (NULL: v1)
+ * into the log at path (named by names), its world and net messages first.
+ * 0, or -1 with one line in err. */
+int duel_lcm_record_game(const char *path, const duel_rules *rules, duel_controller *west, duel_controller *east,
+                         int food_config, const char *west_name, const char *east_name, duel_result *res, char *err,
+                         size_t err_len);
 
 #endif /* DUEL_LCM_H */

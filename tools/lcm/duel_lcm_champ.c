@@ -6,7 +6,8 @@
 #include "neat_phenotype.h"
 
 int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_t champion_pop,
-                                   const neat_genome *champion, const neat_genome *other, const neat_params *p)
+                                   const neat_genome *champion, const neat_genome *other, const neat_params *p,
+                                   const duel_rules *rules)
 {
     neat_phenotype ph[2];
     duel_controller c[2];
@@ -34,7 +35,8 @@ int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_
         c[1].net = &ph[east].net;
         c[1].builtin = 0;
         snprintf(path, sizeof path, "%s/games/gen-%05u-%s.lcm", dir, (unsigned)generation, side ? "east" : "west");
-        if (duel_lcm_record_game(path, &c[0], &c[1], DUEL_TRAINING, name[w], name[east], &res, err, sizeof err) != 0) {
+        if (duel_lcm_record_game(path, rules, &c[0], &c[1], DUEL_TRAINING, name[w], name[east], &res, err,
+                                 sizeof err) != 0) {
             fprintf(stderr, "duel_evolve: %s\n", err);
             rc = -1;
         }

@@ -6,6 +6,7 @@
 #include "duel_files.h"
 #include "duel_lcm.h"
 #include "duel_replay.h"
+#include "duel_trace.h"
 
 /* LCM's log format: per event, big-endian: sync word, event number,
  * microseconds, channel length, data length, channel, data. */
@@ -215,6 +216,21 @@ static int duel_lcm_take(duel_lcm_game *g, const duel_lcm_event *e, char *msg, s
         g->have_world = 1;
         return 0;
     }
+    if (strcmp(e->channel, DUEL_CH_NET) == 0) {
+        /* what plays a side: the first of each side counts; a controller repeats it with its hellos */
+        duel_net_t m;
+        if (duel_msg_decode_net(e->data, e->len, &m, msg, msg_len) != DUEL_NODE_OK)
+            return -1;
+        if (g->step[m.side] == DUEL_TRACE_STEP_UNKNOWN) {
+            g->step[m.side] = m.step;
+        } else if (g->step[m.side] != m.step) {
+            snprintf(msg, msg_len, "the %s side's net message says %s, an earlier one %s", m.side ? "east" : "west",
+                     duel_trace_step_name(m.step), duel_trace_step_name(g->step[m.side]));
+            err = -1;
+        }
+        duel_net_t_decode_cleanup(&m);
+        return err;
+    }
     if (strcmp(e->channel, DUEL_CH_STATE) == 0) {
         duel_state_t m;
         err = duel_msg_decode_state(e->data, e->len, &m, msg, msg_len);
@@ -282,8 +298,10 @@ int duel_lcm_game_read(duel_lcm_game **out, const char *path, char *err, size_t 
     if (duel_lcm_reader_open(&rd, path, err, err_len) != 0)
         return -1;
     g = (duel_lcm_game *)calloc(1, sizeof *g);
-    if (g != NULL)
+    if (g != NULL) {
         g->rules = *duel_rules_v1(); /* a log without a world message is world v1's */
+        g->step[0] = g->step[1] = DUEL_TRACE_STEP_UNKNOWN; /* and one without net messages does not say */
+    }
     if (g == NULL) {
         snprintf(err, err_len, "%s: out of memory", path);
         duel_lcm_reader_close(&rd);
@@ -364,6 +382,8 @@ int duel_replay_from_lcm_log(duel_replay *r, const char *path, char *err, size_t
         r->rules = g->rules; /* the frames' worlds point here, not into g, which is freed below */
         snprintf(r->west, sizeof r->west, "%s", g->name[0]);
         snprintf(r->east, sizeof r->east, "%s", g->name[1]);
+        r->step[0] = g->step[0];
+        r->step[1] = g->step[1];
         /* what came before a truncation stays readable */
         for (t = 0; t < g->rows; t++) {
             memset(&f, 0, sizeof f);

@@ -8,6 +8,13 @@
 
 #include "duel_files.h"
 #include "duel_lcm.h"
+#include "duel_trace.h"
+
+/* a net message's step is the trace's step code */
+typedef char duel_lcm_step_codes_agree[(DUEL_NET_T_BUILTIN == DUEL_TRACE_STEP_BUILTIN && DUEL_NET_T_SYNC ==
+                                        DUEL_TRACE_STEP_SYNC && DUEL_NET_T_PROPAGATE == DUEL_TRACE_STEP_PROPAGATE)
+                                           ? 1
+                                           : -1];
 
 #define DUEL_LCM_NOMINAL_STEP_US 10000 /* the nominal clock of recorded games: 100 steps a second */
 
@@ -112,6 +119,23 @@ void duel_lcm_game_rec_world(duel_lcm_game_rec *g, const duel_rules *rules)
     DUEL_LCM_PUT(g, duel_world_t, DUEL_CH_WORLD, &m, 0);
 }
 
+void duel_lcm_game_rec_nets(duel_lcm_game_rec *g, const duel_controller *west, const duel_controller *east)
+{
+    const duel_controller *c[2];
+    int s;
+    c[0] = west;
+    c[1] = east;
+    for (s = 0; s < 2; s++) {
+        duel_net_t m;
+        memset(&m, 0, sizeof m);
+        m.version = DUEL_NET_T_VERSION;
+        m.side = (int8_t)s;
+        m.step = (int8_t)duel_trace_step_of(c[s]); /* the values of duel_net_t's step */
+        m.controller = g->name[s];
+        DUEL_LCM_PUT(g, duel_net_t, DUEL_CH_NET, &m, 0);
+    }
+}
+
 static void duel_lcm_game_rec_state(duel_lcm_game_rec *g, const duel_world *w, const duel_event *prev)
 {
     duel_state_t m;
@@ -158,14 +182,18 @@ int duel_lcm_game_rec_close(duel_lcm_game_rec *g, int keep, char *err, size_t er
     return duel_lcm_rec_close(&g->rec, keep, err, err_len);
 }
 
-int duel_lcm_record_game(const char *path, duel_controller *west, duel_controller *east, int food_config,
-                         const char *west_name, const char *east_name, duel_result *res, char *err, size_t err_len)
+int duel_lcm_record_game(const char *path, const duel_rules *rules, duel_controller *west, duel_controller *east,
+                         int food_config, const char *west_name, const char *east_name, duel_result *res, char *err,
+                         size_t err_len)
 {
     duel_lcm_game_rec g;
     int e;
     if (duel_lcm_game_rec_open(&g, path, food_config, west_name, east_name, err, err_len) != 0)
         return -1;
-    e = duel_play(west, east, food_config, res, duel_lcm_game_rec_step, &g);
+    duel_lcm_game_rec_world(&g, rules);
+    duel_lcm_game_rec_nets(&g, west, east);
+    e = duel_play_rules(rules != NULL ? rules : duel_rules_v1(), west, east, food_config, res, duel_lcm_game_rec_step,
+                        &g);
     if (e != DUEL_OK) {
         duel_lcm_game_rec_close(&g, 0, err, err_len);
         snprintf(err, err_len, "%s: the game failed (%d)", path, e);

@@ -23,6 +23,7 @@
 #include <lcm/lcm.h>
 
 #include "duel_motor_t.h"
+#include "duel_net_t.h"
 #include "duel_sense_t.h"
 #include "duel_state_t.h"
 #include "duel_world_t.h"
@@ -31,6 +32,7 @@
 /* ---- channels ---- */
 #define DUEL_CH_STATE "DUEL_STATE"
 #define DUEL_CH_WORLD "DUEL_WORLD" /* the rules, when the world is not v1 (duel_world_t) */
+#define DUEL_CH_NET "DUEL_NET"     /* what plays a side and its step mode (duel_net_t) */
 #define DUEL_CH_SENSE_WEST "DUEL_SENSE_WEST"
 #define DUEL_CH_SENSE_EAST "DUEL_SENSE_EAST"
 #define DUEL_CH_MOTOR_WEST "DUEL_MOTOR_WEST"
@@ -47,6 +49,7 @@
 #define DUEL_MSG_MOTOR_HEAD 47u  /* fingerprint, version, side, step, output[3], value[3]; then controller */
 #define DUEL_MSG_STATE_HEAD 20u  /* fingerprint, version, step, food_config; then controller[2] */
 #define DUEL_MSG_STATE_TAIL 201u /* x[2] .. energy_units[2] */
+#define DUEL_MSG_NET_HEAD 14u    /* fingerprint, version, side, step; then controller */
 /* No duel message is larger (a state message with two 255-byte names). */
 #define DUEL_MSG_MAX (DUEL_MSG_STATE_HEAD + 2u * (4u + DUEL_NODE_NAME_MAX + 1u) + DUEL_MSG_STATE_TAIL)
 
@@ -71,6 +74,8 @@ enum duel_node_error {
 int duel_msg_decode_sense(const void *data, size_t len, duel_sense_t *m, char *msg, size_t msg_len);
 int duel_msg_decode_motor(const void *data, size_t len, duel_motor_t *m, char *msg, size_t msg_len);
 int duel_msg_decode_state(const void *data, size_t len, duel_state_t *m, char *msg, size_t msg_len);
+/* also checks side (0, 1) and step (BUILTIN, SYNC, PROPAGATE); free with duel_net_t_decode_cleanup */
+int duel_msg_decode_net(const void *data, size_t len, duel_net_t *m, char *msg, size_t msg_len);
 /* The fingerprint and format version every duel message starts with
  * (duel_lcm_msg.c checks the world message with it). DUEL_NODE_OK, or an
  * error with one line in msg. */
@@ -97,7 +102,8 @@ typedef struct duel_node_ctrl {
 /* Subscribes to the side's sensor channel and the state channel; net is
  * loaded and reset on every step 0. 0 or DUEL_NODE_E_ARG / _LCM. */
 int duel_node_ctrl_start(duel_node_ctrl *c, lcm_t *lcm, nrt_net *net, int side, const char *name);
-/* Publishes one hello (a motor message of step -1). 0 or DUEL_NODE_E_LCM. */
+/* Publishes one hello: what plays this side (DUEL_NET), then a motor message
+ * of step -1. 0 or DUEL_NODE_E_LCM. */
 int duel_node_ctrl_hello(duel_node_ctrl *c);
 void duel_node_ctrl_stop(duel_node_ctrl *c);
 

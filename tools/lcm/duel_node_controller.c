@@ -135,6 +135,17 @@ int duel_node_ctrl_start(duel_node_ctrl *c, lcm_t *lcm, nrt_net *net, int side, 
 
 int duel_node_ctrl_hello(duel_node_ctrl *c)
 {
+    /* what this side is, just before the hello, so the world has it when the game starts */
+    duel_net_t n;
+    memset(&n, 0, sizeof n);
+    n.version = DUEL_NET_T_VERSION;
+    n.side = (int8_t)c->side;
+    n.step = c->net->step == NRT_STEP_PROPAGATE ? DUEL_NET_T_PROPAGATE : DUEL_NET_T_SYNC;
+    n.controller = c->name;
+    if (duel_net_t_publish(c->lcm, DUEL_CH_NET, &n) != 0) {
+        duel_node_fail(c, DUEL_NODE_E_LCM, "cannot publish on %s", DUEL_CH_NET);
+        return DUEL_NODE_E_LCM;
+    }
     return duel_node_publish(c, DUEL_MOTOR_T_HELLO, NULL);
 }
 

@@ -152,3 +152,25 @@ int duel_msg_decode_state(const void *data, size_t len, duel_state_t *m, char *m
     return DUEL_NODE_OK;
 }
 
+
+int duel_msg_decode_net(const void *data, size_t len, duel_net_t *m, char *msg, size_t msg_len)
+{
+    int err = duel_msg_check(data, len, __duel_net_t_get_hash(), DUEL_NET_T_VERSION, "duel.net_t", msg, msg_len);
+    if (!err)
+        err = duel_msg_layout((const uint8_t *)data, len, DUEL_MSG_NET_HEAD, 1, 0, "duel.net_t", msg, msg_len);
+    if (err)
+        return err;
+    memset(m, 0, sizeof *m);
+    if (duel_net_t_decode(data, 0, (int)len, m) != (int)len) {
+        snprintf(msg, msg_len, "a %zu-byte duel.net_t that does not decode", len);
+        duel_net_t_decode_cleanup(m);
+        return DUEL_NODE_E_MALFORMED;
+    }
+    if ((m->side != 0 && m->side != 1) || m->step < DUEL_NET_T_BUILTIN || m->step > DUEL_NET_T_PROPAGATE) {
+        snprintf(msg, msg_len, "duel.net_t with side %d (0 west, 1 east), step %d (-1 builtin, 0 sync, 1 propagate)",
+                 m->side, m->step);
+        duel_net_t_decode_cleanup(m);
+        return DUEL_NODE_E_MALFORMED;
+    }
+    return DUEL_NODE_OK;
+}

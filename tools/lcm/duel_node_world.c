@@ -81,6 +81,30 @@ static void duel_nw_on_motor(const lcm_recv_buf_t *rbuf, const char *channel, vo
     duel_motor_t_decode_cleanup(&m);
 }
 
+/* What plays a side: the first valid one of each side before the game is kept and recorded. */
+static void duel_nw_on_net(const lcm_recv_buf_t *rbuf, const char *channel, void *ud)
+{
+    duel_node_world *nw = (duel_node_world *)ud;
+    duel_net_t m;
+    char why[256];
+
+    if (nw->err)
+        return;
+    if (duel_msg_decode_net(rbuf->data, rbuf->data_size, &m, why, sizeof why) != DUEL_NODE_OK) {
+        if (nw->r->ignored++ == 0)
+            snprintf(nw->r->ignored_msg, sizeof nw->r->ignored_msg, "%s: %s", channel, why);
+        return;
+    }
+    if (nw->step < 0 && !nw->r->have_net[m.side]) {
+        nw->r->have_net[m.side] = 1;
+        nw->r->net_step[m.side] = m.step;
+        if (nw->o->rec != NULL && duel_lcm_rec_write(nw->o->rec, channel, rbuf->data, rbuf->data_size,
+                                                     rbuf->recv_utime) != 0)
+            duel_nw_fail(nw, DUEL_NODE_E_LCM, "%s: write failed", nw->o->rec->path);
+    }
+    duel_net_t_decode_cleanup(&m);
+}
+
 /* Handles messages until done(nw) or the deadline. */
 static void duel_nw_wait(duel_node_world *nw, int64_t deadline, const int *flags)
 {
@@ -119,8 +143,9 @@ int duel_node_world_open(duel_node_world *nw, lcm_t *lcm, const duel_node_world_
     }
     nw->sub[0] = lcm_subscribe(lcm, DUEL_CH_MOTOR_WEST, duel_nw_on_motor, nw);
     nw->sub[1] = lcm_subscribe(lcm, DUEL_CH_MOTOR_EAST, duel_nw_on_motor, nw);
-    if (nw->sub[0] == NULL || nw->sub[1] == NULL)
-        duel_nw_fail(nw, DUEL_NODE_E_LCM, "cannot subscribe to the motor channels");
+    nw->sub_net = lcm_subscribe(lcm, DUEL_CH_NET, duel_nw_on_net, nw);
+    if (nw->sub[0] == NULL || nw->sub[1] == NULL || nw->sub_net == NULL)
+        duel_nw_fail(nw, DUEL_NODE_E_LCM, "cannot subscribe to the motor and net channels");
     return nw->err;
 }
 
@@ -130,7 +155,9 @@ void duel_node_world_close(duel_node_world *nw)
     for (s = 0; s < 2; s++)
         if (nw->sub[s] != NULL)
             lcm_unsubscribe(nw->lcm, nw->sub[s]);
-    nw->sub[0] = nw->sub[1] = NULL;
+    if (nw->sub_net != NULL)
+        lcm_unsubscribe(nw->lcm, nw->sub_net);
+    nw->sub[0] = nw->sub[1] = nw->sub_net = NULL;
 }
 
 int duel_node_world_play(duel_node_world *nw)
@@ -151,6 +178,10 @@ int duel_node_world_play(duel_node_world *nw)
         duel_nw_fail(nw, DUEL_NODE_E_TIMEOUT, "no %s controller said hello within %d ms (%s)",
                      nw->hello[0] ? "east" : nw->hello[1] ? "west" : "west or east", o->wait_ms,
                      nw->hello[0] || nw->hello[1] ? "is it running on this LCM URL?" : "are they running on this LCM URL?");
+    /* a controller sends its net message just before each hello: one that came before the world listened
+     * comes again with the next hello; a controller that sends none (an older one) costs this wait once */
+    if (!nw->err && !(nw->r->have_net[0] && nw->r->have_net[1]))
+        duel_nw_wait(nw, duel_node_now_ms() + 2 * DUEL_NODE_HELLO_MS + 50, nw->r->have_net);
 
     memset(&ev, 0, sizeof ev);
     if (!nw->err && o->rules != NULL && !duel_rules_equal(o->rules, duel_rules_v1())) {

@@ -11,6 +11,7 @@ void duel_replay_init(duel_replay *r)
     memset(r, 0, sizeof *r);
     r->food_config = DUEL_TRAINING;
     r->rules = *duel_rules_v1();
+    r->step[0] = r->step[1] = -2; /* not recorded */
 }
 
 void duel_replay_free(duel_replay *r)

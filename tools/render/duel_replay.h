@@ -24,6 +24,8 @@ typedef struct duel_replay {
     int food_config;          /* DUEL_TRAINING or 0..DUEL_CONFIGS-1 */
     duel_rules rules;         /* the game's world, which every frame's world points at */
     char west[256], east[256]; /* the controllers' names, for captions */
+    int step[2];              /* how each side stepped, from a log's net messages: -1 builtin, 0 sync,
+                               * 1 propagate, -2 not recorded (duel_trace.h's codes; docs/lcm.md) */
 } duel_replay;
 
 void duel_replay_init(duel_replay *r);
