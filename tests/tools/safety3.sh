@@ -254,6 +254,17 @@ dir/x.dot"
   expect_bad "cut\\\\x0d.genome: not a valid genome file" play "$tmp/cut"$'\r'".genome" builtin:idle
   expect_bad "--set hof_opponents=.*: hof_opponents: a control character (byte 0x1b) in its value" \
     config --dump --set $'hof_opponents=6\e[31m'
+  # every other message that echoes a path escapes it too (a run, a configuration, a plan, an output, a log)
+  nl=$'\n'
+  expect_bad "r\\\\x0ax/dominance.csv: cannot open" ladder "$tmp/r${nl}x"
+  expect_bad "a\\\\x1b\[31m.ini: cannot open" run --config "$tmp/a"$'\e'"[31m.ini" --out "$tmp/zz"
+  expect_bad "compare: .*r\\\\x0ax: not a run directory" compare "$tmp/r${nl}x" --against "$tmp/s${nl}y"
+  expect_bad "experiment: .*p\\\\x0a.ini: cannot open" experiment "$tmp/p${nl}.ini" --out "$tmp/qq"
+  expect_bad "r\\\\x0ax/config.ini: cannot open" resume "$tmp/r${nl}x"
+  expect_bad "render: .*e\\\\x0ax.lcm: cannot open" render "$tmp/e${nl}x.lcm" --out "$tmp/fr9"
+  expect_bad "e\\\\x0ax.lcm: cannot open" log info "$tmp/e${nl}x.lcm"
+  expect_bad "--trace .*nodir\\\\x0a/t.csv: cannot write: .*nodir\\\\x0a does not exist" \
+    play builtin:idle builtin:idle --food 1 --trace "$tmp/nodir${nl}/t.csv"
   printf '[neat]\npop_size = 1\033[31m\n' > "$tmp/c.ini"
   expect_bad "c.ini:2: a control character (byte 0x1b) at column 13" config --config "$tmp/c.ini" --dump
   ;;

@@ -46,7 +46,7 @@ int duel_cmd_experiment(int argc, char **argv)
     mode = strcmp(argv[0], "resume") == 0 ? 1 : strcmp(argv[0], "report") == 0 ? 2 : 0;
     if (mode != 0 && (argc < 2 || argv[1][0] == '-')) {
         fprintf(stderr, "duel_evolve: experiment %s: which experiment directory? (duel_evolve experiment --help)\n",
-                argv[0]);
+                duel_esc(argv[0]));
         return 2;
     }
     what = mode == 0 ? argv[0] : argv[1];
@@ -99,7 +99,7 @@ int duel_cmd_experiment(int argc, char **argv)
         rc = duel_plan_load_dir(&plan, what, err, sizeof err);
     free(sets);
     if (rc != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s\n", err);
+        fprintf(stderr, "duel_evolve: experiment: %s\n", duel_esc_msg(err));
         duel_plan_free(plan);
         return 2;
     }

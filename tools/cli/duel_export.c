@@ -9,6 +9,7 @@
 #include "duel_files.h"
 #include "duel_outputs.h"
 #include "duel_world_cfg.h"
+#include "duel_text.h"
 
 #define DUEL_EXPORT_NAME_MAX 63 /* longest array name; NAME_len adds 4 */
 #define DUEL_EXPORT_PER_LINE 12 /* bytes per line of the initialiser */
@@ -267,7 +268,7 @@ int duel_cmd_export(int argc, char **argv)
         if (strcmp(argv[i], "--c-array") == 0 || strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--header") == 0 ||
             strcmp(argv[i], "--world") == 0) {
             if (i + 1 >= argc) {
-                fprintf(stderr, "duel_evolve: export: %s needs a value\n", argv[i]);
+                fprintf(stderr, "duel_evolve: export: %s needs a value\n", duel_esc(argv[i]));
                 return 2;
             }
             if (argv[i][1] == 'o')
@@ -297,7 +298,7 @@ int duel_cmd_export(int argc, char **argv)
         }
         if (!raw && !duel_export_name_ok(x.name)) {
             fprintf(stderr, "duel_evolve: export: '%s' is not a C identifier of at most %d characters (nor a "
-                            "keyword)\n", x.name, DUEL_EXPORT_NAME_MAX);
+                            "keyword)\n", duel_esc(x.name), DUEL_EXPORT_NAME_MAX);
             return 2;
         }
         w.name = x.name;
@@ -320,7 +321,7 @@ int duel_cmd_export(int argc, char **argv)
     }
     if (!duel_export_name_ok(x.name)) {
         fprintf(stderr, "duel_evolve: export: '%s' is not a C identifier of at most %d characters (nor a keyword)\n",
-                x.name, DUEL_EXPORT_NAME_MAX);
+                duel_esc(x.name), DUEL_EXPORT_NAME_MAX);
         return 2;
     }
     /* before anything is written: never over the blob, the other output or a file that is not an export */

@@ -213,14 +213,14 @@ static int duel_insp_open(duel_insp *x, const char *path)
         err = x->mem == NULL ? NRT_E_NOMEM : nrt_load(n, x->blob, x->len, x->mem, x->mem_required);
     }
     if (err) {
-        fprintf(stderr, "duel_evolve: %s: not a valid champion blob: %s\n", path, nrt_strerror(err));
+        fprintf(stderr, "duel_evolve: %s: not a valid champion blob: %s\n", duel_esc(path), nrt_strerror(err));
         duel_insp_free(x);
         return -1;
     }
     x->dst = (uint16_t *)malloc((n->n_conns + 1u) * sizeof *x->dst);
     x->recurrent = (uint8_t *)malloc(n->n_conns + 1u);
     if (x->dst == NULL || x->recurrent == NULL) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
+        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
         duel_insp_free(x);
         return -1;
     }
@@ -233,7 +233,7 @@ static int duel_insp_open(duel_insp *x, const char *path)
         x->n_in[x->dst[k]]++;
     }
     if (duel_insp_recurrence(x) != 0) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
+        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
         duel_insp_free(x);
         return -1;
     }

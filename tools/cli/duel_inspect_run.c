@@ -9,6 +9,7 @@
 #include "duel_files.h"
 #include "duel_world_cfg.h"
 #include "neat_coev.h"
+#include "duel_text.h"
 
 
 static const char *duel_mode_name(int mode)
@@ -68,7 +69,7 @@ static int duel_inspect_pop_ckpt(const char *path, const uint8_t *buf, size_t le
     const uint8_t *tag;
     int e = neat_pop_load(&pop, buf, len, NULL, &off);
     if (e) {
-        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(e));
+        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", duel_esc(path), off, neat_strerror(e));
         return 2;
     }
     printf("file: %s\n", path);
@@ -113,7 +114,7 @@ int duel_inspect_run(const char *arg)
     }
     e = duel_ckpt_load("", path, &c);
     if (e > 0)
-        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, strerror(ENOENT));
+        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), strerror(ENOENT));
     if (e != 0)
         return 2;
     s = neat_coev_start(c);

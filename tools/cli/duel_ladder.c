@@ -293,7 +293,7 @@ int duel_cmd_ladder(int argc, char **argv)
             snprintf(path, sizeof path, "%s/ladder.csv", o.dir);
         k = duel_file_replace(path, text, len) != 0;
         if (k)
-            fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+            fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     }
     free(text);
     return k ? 1 : 0;

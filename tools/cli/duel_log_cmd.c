@@ -28,7 +28,7 @@ static int duel_log_info(const char *path)
     int status = duel_lcm_game_read(&g, path, err, sizeof err);
 
     if (g == NULL) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     if (g->n_channels > 1) /* qsort of NULL, even of nothing, is undefined */
@@ -76,7 +76,7 @@ static int duel_log_info(const char *path)
     duel_lcm_game_free(g);
     if (status != 0) {
         fflush(stdout);
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     return 0;
@@ -92,7 +92,7 @@ static int duel_log_dump_trace(const char *path)
     int status = duel_lcm_game_read(&g, path, err, sizeof err);
 
     if (status == -1) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         duel_lcm_game_free(g);
         return 2;
     }
@@ -108,7 +108,7 @@ static int duel_log_dump_trace(const char *path)
     if (fflush(stdout) != 0 || ferror(stdout))
         return 1; /* duel_evolve.c says so */
     if (status != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     return 0;
@@ -183,7 +183,7 @@ static int duel_log_dump_channel(const char *path, const char *channel)
         return 2;
     }
     if (duel_lcm_reader_open(&rd, path, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     while (!bad && (rc = duel_lcm_reader_next(&rd, &e, err, sizeof err)) == 1) {
@@ -243,11 +243,11 @@ static int duel_log_dump_channel(const char *path, const char *channel)
     if (fflush(stdout) != 0 || ferror(stdout))
         return 1; /* duel_evolve.c says so */
     if (bad || rc < 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     if (n == 0) {
-        fprintf(stderr, "duel_evolve: %s: no messages on channel %s\n", path, channel);
+        fprintf(stderr, "duel_evolve: %s: no messages on channel %s\n", duel_esc(path), channel);
         return 2;
     }
     return 0;

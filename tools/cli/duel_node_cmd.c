@@ -49,12 +49,12 @@ static lcm_t *duel_node_lcm(const char *url)
      * loopback only (memq://, tcpq://127.0.0.1:PORT, file://) */
     if (strncmp(url, "udpm://", 7) == 0 || strchr(url, ':') == NULL) {
         fprintf(stderr, "duel_evolve: node: '%s': UDP multicast is not used here; give memq://, file:// or "
-                        "tcpq://127.0.0.1:PORT\n", url);
+                        "tcpq://127.0.0.1:PORT\n", duel_esc(url));
         return NULL;
     }
     lcm = duel_node_lcm_create(url);
     if (lcm == NULL)
-        fprintf(stderr, "duel_evolve: node: cannot start LCM on '%s' (a bad URL, or no hub listening there)\n", url);
+        fprintf(stderr, "duel_evolve: node: cannot start LCM on '%s' (a bad URL, or no hub listening there)\n", duel_esc(url));
     return lcm;
 }
 
@@ -102,7 +102,7 @@ static int duel_node_controller_cmd(int argc, char **argv)
     }
     if (strncmp(argv[0], "builtin:", 8) == 0) {
         fprintf(stderr, "duel_evolve: node controller: %s: a node runs a champion blob through the runtime, not a "
-                        "builtin strategy\n", argv[0]);
+                        "builtin strategy\n", duel_esc(argv[0]));
         return 2;
     }
     if (duel_cli_ctrl_open(&c, argv[0]) != 0)
@@ -210,7 +210,7 @@ static int duel_node_world_cmd(int argc, char **argv)
         return 2;
     if (log_path != NULL) {
         if (duel_lcm_rec_open(&rec, log_path, err_text, sizeof err_text) != 0) {
-            fprintf(stderr, "duel_evolve: %s\n", err_text);
+            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err_text));
             lcm_destroy(lcm);
             return 2;
         }
@@ -223,7 +223,7 @@ static int duel_node_world_cmd(int argc, char **argv)
                 (unsigned long)r.ignored, r.ignored == 1 ? "" : "s", r.ignored_msg);
     /* a game lost by forfeit is a game: its log is kept */
     if (o.rec != NULL && duel_lcm_rec_close(&rec, err == 0 || r.forfeit != 0, err_text, sizeof err_text) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err_text);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err_text));
         return 1;
     }
     if (err) {

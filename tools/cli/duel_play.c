@@ -102,14 +102,14 @@ static void duel_play_note_world(const duel_cli_ctrl *c, const char *which, cons
     char a[40], b[40];
     if (c->origin.world_from != DUEL_ORIGIN_NONE && !duel_rules_equal(&c->origin.world, world))
         fprintf(stderr, "duel_evolve: play: note: %s (%s) was made in world %s; played in world %s as --world asks\n",
-                which, c->name, duel_world_label(&c->origin.world, a, sizeof a), duel_world_label(world, b, sizeof b));
+                which, duel_esc(c->name), duel_world_label(&c->origin.world, a, sizeof a), duel_world_label(world, b, sizeof b));
 }
 
 static void duel_play_note_default(const duel_cli_ctrl *c, const char *which)
 {
     if (!c->origin.builtin && c->origin.world_from == DUEL_ORIGIN_NONE)
         fprintf(stderr, "duel_evolve: play: note: %s (%s) records no world (%s): played in world v1, the default "
-                        "(--world chooses another)\n", which, c->name,
+                        "(--world chooses another)\n", which, duel_esc(c->name),
                 c->origin.genome ? "a genome file of format 1 outside any run" : "a blob never does; its run's "
                                                                                  "genome file does");
 }
@@ -238,7 +238,7 @@ int duel_cmd_play(int argc, char **argv)
         if (trace_path != NULL) {
             /* written as TRACE.tmp, put in place only when the game and its log are */
             if (duel_out_open(&trace, trace_path) != 0) {
-                fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", trace_path, strerror(errno));
+                fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(trace_path), strerror(errno));
                 duel_cli_ctrl_close(&a);
                 duel_cli_ctrl_close(&b);
                 return 2;
@@ -256,7 +256,7 @@ int duel_cmd_play(int argc, char **argv)
             char lerr[4400];
             if (duel_lcm_game_rec_open(&lg, lcm_path, food, a_west ? a.name : b.name, a_west ? b.name : a.name, lerr,
                                        sizeof lerr) != 0) {
-                fprintf(stderr, "duel_evolve: %s\n", lerr);
+                fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(lerr));
                 if (tf != NULL)
                     duel_out_abort(&trace);
                 duel_cli_ctrl_close(&a);
@@ -270,7 +270,7 @@ int duel_cmd_play(int argc, char **argv)
             err = a_west ? duel_play_rules(&world, &a.ctrl, &b.ctrl, food, &r, duel_lcm_game_rec_step, &lg)
                          : duel_play_rules(&world, &b.ctrl, &a.ctrl, food, &r, duel_lcm_game_rec_step, &lg);
             if (duel_lcm_game_rec_close(&lg, err == 0, lerr, sizeof lerr) != 0 && err == 0) {
-                fprintf(stderr, "duel_evolve: %s\n", lerr);
+                fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(lerr));
                 rc = 1;
             }
         } else {
@@ -281,7 +281,7 @@ int duel_cmd_play(int argc, char **argv)
             if (err != 0 || rc != 0) {
                 duel_out_abort(&trace);
             } else if (duel_out_commit(&trace) != 0) {
-                fprintf(stderr, "duel_evolve: %s: write failed: %s\n", trace_path, strerror(errno));
+                fprintf(stderr, "duel_evolve: %s: write failed: %s\n", duel_esc(trace_path), strerror(errno));
                 rc = 1;
             }
         }

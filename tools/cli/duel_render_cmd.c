@@ -80,9 +80,9 @@ static int duel_rc_target(const char *cmd, const char *path, char target[DUEL_RC
         return 0;
     if (direct)
         fprintf(stderr, "duel_evolve: %s: %s: cannot write: not a regular file (the %s is written to a temporary "
-                        "file and renamed)\n", cmd, path, what);
+                        "file and renamed)\n", cmd, duel_esc(path), what);
     else
-        fprintf(stderr, "duel_evolve: %s: %s: cannot write: %s\n", cmd, path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: %s: cannot write: %s\n", cmd, duel_esc(path), strerror(errno));
     return -1;
 }
 
@@ -161,11 +161,11 @@ static int duel_rc_frames_dir(const char *cmd, const char *dir)
     if (stat(dir, &st) != 0)
         return 0; /* created */
     if (!S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: %s: --out %s is not a directory\n", cmd, dir);
+        fprintf(stderr, "duel_evolve: %s: --out %s is not a directory\n", cmd, duel_esc(dir));
         return 2;
     }
     if ((d = opendir(dir)) == NULL) {
-        fprintf(stderr, "duel_evolve: %s: --out %s: cannot list it: %s\n", cmd, dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: --out %s: cannot list it: %s\n", cmd, duel_esc(dir), strerror(errno));
         return 2;
     }
     while (rc == 0 && (e = readdir(d)) != NULL) {
@@ -176,7 +176,7 @@ static int duel_rc_frames_dir(const char *cmd, const char *dir)
             (len > 4 && strcmp(n + len - 4, ".tmp") == 0 && (strncmp(n, "frame-", 6) == 0 || strncmp(n, ".probe.", 7) == 0)))
             continue;
         fprintf(stderr, "duel_evolve: %s: --out %s holds '%s', which is not a frame of duel_evolve render: choose "
-                        "another --out (an empty or new directory)\n", cmd, dir, duel_text_escape(n, esc, sizeof esc));
+                        "another --out (an empty or new directory)\n", cmd, duel_esc(dir), duel_text_escape(n, esc, sizeof esc));
         rc = 2;
     }
     closedir(d);
@@ -199,7 +199,7 @@ static int duel_rc_drop_frames(const char *dir, unsigned n)
             continue;
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         if (unlink(path) != 0 && errno != ENOENT) {
-            fprintf(stderr, "duel_evolve: render: %s: cannot remove an earlier render's frame: %s\n", path,
+            fprintf(stderr, "duel_evolve: render: %s: cannot remove an earlier render's frame: %s\n", duel_esc(path),
                     strerror(errno));
             rc = -1;
         }
@@ -267,7 +267,7 @@ static int duel_rc_read_log(duel_replay *rep, const char *path)
 {
     char err[512];
     if (duel_replay_from_lcm_log(rep, path, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: render: %s\n", err);
+        fprintf(stderr, "duel_evolve: render: %s\n", duel_esc_msg(err));
         return -1;
     }
     return 0;
@@ -321,7 +321,7 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
     pattern[j] = '\0';
     if (snprintf(tmp, sizeof tmp, "%s.tmp", video) >= (int)sizeof tmp ||
         strlen(pattern) + 16 >= sizeof pattern || snprintf(out, sizeof out, "file:%s", tmp) >= (int)sizeof out) {
-        fprintf(stderr, "duel_evolve: render: %s: name too long\n", video);
+        fprintf(stderr, "duel_evolve: render: %s: name too long\n", duel_esc(video));
         return -1;
     }
     strcat(pattern, "/frame-%05d.png");
@@ -359,14 +359,14 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
     if (st != 0) {
         remove(tmp);
         if (st > 0)
-            fprintf(stderr, "duel_evolve: render: %s: ffmpeg failed (exit status %d)%s%s\n", video, st,
-                    msg[0] ? ": " : "", msg);
+            fprintf(stderr, "duel_evolve: render: %s: ffmpeg failed (exit status %d)%s%s\n", duel_esc(video), st,
+                    msg[0] ? ": " : "", duel_esc_msg(msg));
         else
-            fprintf(stderr, "duel_evolve: render: %s: %s\n", video, msg);
+            fprintf(stderr, "duel_evolve: render: %s: %s\n", duel_esc(video), duel_esc_msg(msg));
         return -1;
     }
     if (duel_file_sync(tmp) != 0 || duel_file_commit(tmp, video) != 0) {
-        fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
+        fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", duel_esc(video), strerror(errno));
         remove(tmp);
         return -1;
     }
@@ -480,7 +480,7 @@ int duel_cmd_render(int argc, char **argv)
             return 2;
         video = video_target;
         if (duel_rc_probe(video, ".tmp") != 0) {
-            fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", video, strerror(errno));
+            fprintf(stderr, "duel_evolve: render: %s: cannot write: %s\n", duel_esc(video), strerror(errno));
             return 2;
         }
     }
@@ -496,7 +496,7 @@ int duel_cmd_render(int argc, char **argv)
         return 2;
     }
     if (strlen(dir) + 32 > sizeof path) {
-        fprintf(stderr, "duel_evolve: render: %s: name too long\n", dir);
+        fprintf(stderr, "duel_evolve: render: %s: name too long\n", duel_esc(dir));
         duel_replay_free(&rep);
         return 2;
     }
@@ -515,13 +515,13 @@ int duel_cmd_render(int argc, char **argv)
     }
     n_out = 0;
     if (duel_mkdir(dir) != 0) {
-        fprintf(stderr, "duel_evolve: render: %s: cannot create the directory: %s\n", dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: render: %s: cannot create the directory: %s\n", duel_esc(dir), strerror(errno));
         duel_replay_free(&rep);
         return 2;
     }
     snprintf(suffix, sizeof suffix, "/.probe.%ld.tmp", (long)getpid());
     if (duel_rc_probe(dir, suffix) != 0) {
-        fprintf(stderr, "duel_evolve: render: %s: cannot write in the directory: %s\n", dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: render: %s: cannot write in the directory: %s\n", duel_esc(dir), strerror(errno));
         duel_replay_free(&rep);
         return 2;
     }
@@ -531,7 +531,7 @@ int duel_cmd_render(int argc, char **argv)
         return 2;
     }
     if (duel_render_open(&ren, size, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: render: %s\n", err);
+        fprintf(stderr, "duel_evolve: render: %s\n", duel_esc_msg(err));
         duel_replay_free(&rep);
         return 1;
     }
@@ -550,7 +550,7 @@ int duel_cmd_render(int argc, char **argv)
         duel_render_frame_info(&ren, &rep.frames[k], flags, &info);
         snprintf(path, sizeof path, "%s/frame-%05u.png", dir, n_out);
         if (duel_render_write_png(&ren, path, err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: render: %s\n", err);
+            fprintf(stderr, "duel_evolve: render: %s\n", duel_esc_msg(err));
             rc = 1;
             break;
         }
@@ -672,13 +672,13 @@ int duel_cmd_render_net(int argc, char **argv)
     }
     if (snprintf(tmp_dot, sizeof tmp_dot, "%s.dot.tmp", out) >= (int)sizeof tmp_dot ||
         snprintf(tmp_png, sizeof tmp_png, "%s.tmp", out) >= (int)sizeof tmp_png) {
-        fprintf(stderr, "duel_evolve: render-net: %s: name too long\n", out);
+        fprintf(stderr, "duel_evolve: render-net: %s: name too long\n", duel_esc(out));
         free(text);
         return 2;
     }
     fd = duel_tmp_create(tmp_dot);
     if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
-        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
+        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", duel_esc(out), strerror(errno));
         if (fd >= 0) {
             close(fd);
             remove(tmp_dot);
@@ -689,7 +689,7 @@ int duel_cmd_render_net(int argc, char **argv)
     st = fwrite(text, 1, text_len, f) == text_len;
     free(text);
     if (fclose(f) != 0 || !st) {
-        fprintf(stderr, "duel_evolve: render-net: %s: write failed: %s\n", out, strerror(errno));
+        fprintf(stderr, "duel_evolve: render-net: %s: write failed: %s\n", duel_esc(out), strerror(errno));
         remove(tmp_dot);
         return 1;
     }
@@ -703,13 +703,13 @@ int duel_cmd_render_net(int argc, char **argv)
     remove(tmp_dot);
     if (st != 0) {
         if (st > 0)
-            fprintf(stderr, "duel_evolve: render-net: %s: dot failed (exit status %d)%s%s\n", out, st,
-                    msg[0] ? ": " : "", msg);
+            fprintf(stderr, "duel_evolve: render-net: %s: dot failed (exit status %d)%s%s\n", duel_esc(out), st,
+                    msg[0] ? ": " : "", duel_esc_msg(msg));
         else
-            fprintf(stderr, "duel_evolve: render-net: %s: %s\n", out, msg);
+            fprintf(stderr, "duel_evolve: render-net: %s: %s\n", duel_esc(out), duel_esc_msg(msg));
         rc = 1;
     } else if (duel_rc_mark_png(tmp_png) != 0 || duel_file_sync(tmp_png) != 0 || duel_file_commit(tmp_png, out) != 0) {
-        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", out, strerror(errno));
+        fprintf(stderr, "duel_evolve: render-net: %s: cannot write: %s\n", duel_esc(out), strerror(errno));
         rc = 1;
     }
     if (rc != 0)

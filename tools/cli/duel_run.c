@@ -90,7 +90,7 @@ static void duel_log(duel_run *R, const char *fmt, ...)
     strcat(line, "\n");
     duel_path(path, sizeof path, R->dir, "log.txt");
     if (!R->log_failed && duel_file_append(path, line) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
         R->log_failed = 1;
     }
 }
@@ -133,7 +133,7 @@ static int duel_write_config(const duel_run *R)
     duel_path(path, sizeof path, R->dir, "config.ini");
     r = duel_file_replace(path, text, len);
     if (r != 0)
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     free(text);
     return r;
 }
@@ -152,7 +152,7 @@ static int duel_save_checkpoint(const duel_run *R)
     duel_path(path, sizeof path, R->dir, "checkpoint.bin");
     r = duel_file_replace(path, buf, len);
     if (r != 0)
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     if (R->fixed != NULL)
         neat_pop_buf_free(duel_fixed_pop(R->fixed), buf, len);
     else
@@ -200,13 +200,13 @@ static int duel_write_blob(const char *path, const neat_genome *g, const neat_pa
     neat_phenotype_init(&ph, NULL);
     err = neat_phenotype_load(&ph, g, p);
     if (err) {
-        fprintf(stderr, "duel_evolve: %s: cannot encode: %s\n", path, duel_game_error(err));
+        fprintf(stderr, "duel_evolve: %s: cannot encode: %s\n", duel_esc(path), duel_game_error(err));
         neat_phenotype_free(&ph);
         return -1;
     }
     r = duel_file_replace(path, ph.blob, ph.blob_len);
     if (r != 0)
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     neat_phenotype_free(&ph);
     return r;
 }
@@ -296,7 +296,7 @@ static int duel_record(duel_run *R, const neat_coev_report *rep, double secs)
         return -1;
     return duel_save_checkpoint(R);
 fail:
-    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     return -1;
 }
 
@@ -378,7 +378,7 @@ static int duel_strength(duel_run *R, uint32_t g, const neat_genome *champ)
     if (duel_file_append(path, row) == 0)
         return 0;
 fail:
-    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     return -1;
 }
 
@@ -436,7 +436,7 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
     duel_path(path, sizeof path, R->dir, "strength.csv");
     r = duel_file_read(path, DUEL_STRENGTH_MAX_FILE, &have, &have_len);
     if (r != 0 && errno != ENOENT) {
-        fprintf(stderr, "duel_evolve: %s: %s: refusing to replace it\n", path, duel_file_strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: %s: refusing to replace it\n", duel_esc(path), duel_file_strerror(errno));
         return 2;
     }
     /* the file's format: with the champion column (checked below) or, when it was written without, so on */
@@ -494,7 +494,7 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
                 fprintf(stderr, "duel_evolve: %s: generation %u's row is lost and cannot be measured again without "
                                 "%s (%s): restore either, or resume with --set strength_every=0 to measure "
                                 "nothing more\n",
-                        path, q, name, duel_file_strerror(errno));
+                        duel_esc(path), q, name, duel_file_strerror(errno));
                 fclose(mem);
                 free(text);
                 free(have);
@@ -507,7 +507,7 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
             if (R->coev != NULL && duel_strength_champion_ok(R, q, hex) != 1) {
                 fprintf(stderr, "duel_evolve: %s/%s is not one of generation %u's bests in the checkpoint (a file put "
                                 "in its place): restore it, or resume with --set strength_every=0 to measure nothing "
-                                "more\n", R->dir, name, q);
+                                "more\n", duel_esc(R->dir), name, q);
                 free(blob);
                 fclose(mem);
                 free(text);
@@ -518,7 +518,7 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
         r = duel_strength_row(R, q, blob, blen, row, sizeof row);
         free(blob);
         if (r != 0) {
-            fprintf(stderr, "duel_evolve: %s: generation %u's row could not be measured again from %s\n", path, q,
+            fprintf(stderr, "duel_evolve: %s: generation %u's row could not be measured again from %s\n", duel_esc(path), q,
                     name);
             fclose(mem);
             free(text);
@@ -542,7 +542,7 @@ static int duel_rebuild_strength(duel_run *R, uint32_t g)
     free(have);
     r = duel_file_replace(path, text, len) != 0;
     if (r)
-        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", duel_esc(path), duel_file_strerror(errno));
     else
         duel_log(R, "resume: strength.csv rebuilt (%u row%s measured again from champions/)", measured,
                  duel_s(measured));
@@ -609,7 +609,7 @@ static int duel_record_fixed(duel_run *R, const duel_fixed_report *rep, double s
         return -1;
     return duel_save_checkpoint(R);
 fail:
-    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+    fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     return -1;
 }
 
@@ -777,7 +777,7 @@ static int duel_apply_overrides(duel_run *R, uint32_t g)
     if (k == R->cfg.n_over || R->first_applied == g + 1u)
         return 0; /* none, or applied already by the resume that starts here */
     if (duel_config_at(&R->cfg, g, &R->eff, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     e = R->fixed != NULL ? neat_pop_set_params(duel_fixed_pop(R->fixed), &R->eff.neat)
@@ -812,7 +812,7 @@ static int duel_loop(duel_run *R)
             duel_clear_bar(R);
             duel_log(R, "interrupted before generation %u", n);
             fprintf(stderr, "duel_evolve: interrupted; %u generation%s saved. Resume with: duel_evolve resume %s\n",
-                    n, n == 1 ? " is" : "s are", R->dir);
+                    n, n == 1 ? " is" : "s are", duel_esc(R->dir));
             return 130;
         }
         R->gen_in_flight = duel_next_gen(R);
@@ -856,7 +856,7 @@ static int duel_loop(duel_run *R)
             return 1;
         if (!R->quiet)
             fprintf(stderr, "done: %u generation%s in %s; the last champion: %u hidden node%s, %u connection%s "
-                            "(champions/gen-%05u.blob)\n", R->cfg.generations, duel_s(R->cfg.generations), R->dir,
+                            "(champions/gen-%05u.blob)\n", R->cfg.generations, duel_s(R->cfg.generations), duel_esc(R->dir),
                     dh, duel_s(dh), dc, duel_s(dc), R->cfg.generations - 1u);
         return 0;
     }
@@ -874,7 +874,7 @@ static int duel_loop(duel_run *R)
         if (!R->quiet)
             fprintf(stderr, "done: %u generation%s in %s; dominance level %u; top dominant: generation %u, %u "
                             "hidden node%s, %u connection%s (champions/gen-%05u.blob)\n",
-                    R->cfg.generations, duel_s(R->cfg.generations), R->dir, n, d.generation, dh, duel_s(dh), dc,
+                    R->cfg.generations, duel_s(R->cfg.generations), duel_esc(R->dir), n, d.generation, dh, duel_s(dh), dc,
                     duel_s(dc), d.generation);
     }
     return 0;
@@ -904,11 +904,11 @@ static int duel_take_lock(const char *dir)
     if (duel_dir_lock(dir, &duel_run_lock) == 0)
         return 0;
     if (errno == EWOULDBLOCK)
-        fprintf(stderr, "duel_evolve: %s is in use by another duel_evolve run or resume\n", dir);
+        fprintf(stderr, "duel_evolve: %s is in use by another duel_evolve run or resume\n", duel_esc(dir));
     else if (errno == ELOOP)
-        fprintf(stderr, "duel_evolve: %s/.lock is a symbolic link: refusing to follow it (remove it)\n", dir);
+        fprintf(stderr, "duel_evolve: %s/.lock is a symbolic link: refusing to follow it (remove it)\n", duel_esc(dir));
     else
-        fprintf(stderr, "duel_evolve: %s/.lock: cannot open: %s\n", dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s/.lock: cannot open: %s\n", duel_esc(dir), strerror(errno));
     return -1;
 }
 
@@ -1091,18 +1091,18 @@ static int duel_check_tag(const duel_run *R, const uint8_t *tag, size_t len, con
         return -1;
     made = *duel_rules_v1();
     if (len > 0 && duel_rules_decode(&made, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, NULL) != DUEL_OK) {
-        fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged\n", path);
+        fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged\n", duel_esc(path));
         return -1;
     }
     if (!duel_rules_equal(&made, &R->cfg.world)) {
         fprintf(stderr, "duel_evolve: %s: the run was made in world %s, but config.ini's [world] says %s: a run's "
-                        "rules cannot change (restore config.ini, or start a new run)\n", path,
+                        "rules cannot change (restore config.ini, or start a new run)\n", duel_esc(path),
                 duel_world_label(&made, a, sizeof a), duel_world_label(&R->cfg.world, b, sizeof b));
         return -1;
     }
     if (len > 0 && !duel_tag_overrides_agree(&R->cfg, tag, len, g)) {
         fprintf(stderr, "duel_evolve: %s: the run was played with other [overrides] before generation %u than "
-                        "config.ini says (a hand edit): restore config.ini\n", path, g);
+                        "config.ini says (a hand edit): restore config.ini\n", duel_esc(path), g);
         return -1;
     }
     /* what makes the games, the overrides apart (compared above) */
@@ -1112,7 +1112,7 @@ static int duel_check_tag(const duel_run *R, const uint8_t *tag, size_t len, con
                  : len != wlen || memcmp(tag, want, len) != 0) {
         fprintf(stderr, "duel_evolve: %s: the run was made with other games than config.ini now makes ([run] "
                         "train_layouts, [opponents], their files in opponents/, or net_step changed): restore them, "
-                        "or start a new run\n", path);
+                        "or start a new run\n", duel_esc(path));
         return -1;
     }
     return 0;
@@ -1152,7 +1152,7 @@ static int duel_load_opponents(duel_run *R, int copies)
             char a[40], b[40];
             fprintf(stderr, "duel_evolve: note: [opponents] %s was made in world %s; this run plays it in its own "
                             "world, %s\n",
-                    path, duel_world_label(&origin.world, a, sizeof a), duel_world_label(&R->cfg.world, b, sizeof b));
+                    duel_esc(path), duel_world_label(&origin.world, a, sizeof a), duel_world_label(&R->cfg.world, b, sizeof b));
             snprintf(R->opp_note, sizeof R->opp_note, "[opponents] %s was made in world %s; played in the run's "
                      "world, %s", path, a, b);
         }
@@ -1166,7 +1166,7 @@ static int duel_load_opponents(duel_run *R, int copies)
             e = NRT_E_COUNTS;
         free(mem);
         if (e != 0) {
-            fprintf(stderr, "duel_evolve: [opponents] %s: not a duel controller: %s\n", path,
+            fprintf(stderr, "duel_evolve: [opponents] %s: not a duel controller: %s\n", duel_esc(path),
                     e == NRT_E_COUNTS ? "it does not have the duel's 13 inputs and 3 outputs" : nrt_strerror(e));
             free(blob);
             return 2;
@@ -1186,7 +1186,7 @@ static int duel_copy_opponents(const duel_run *R)
         return 0;
     snprintf(path, sizeof path, "%s/opponents", R->dir);
     if (duel_mkdir(path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", duel_esc(path), strerror(errno));
         return -1;
     }
     for (k = 0; k < R->cfg.opp.n; k++) {
@@ -1194,7 +1194,7 @@ static int duel_copy_opponents(const duel_run *R)
             continue;
         snprintf(path, sizeof path, "%s/opponents/%02u.blob", R->dir, k + 1u);
         if (duel_file_replace(path, R->opp[k].blob, R->opp[k].len) != 0) {
-            fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+            fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
             return -1;
         }
     }
@@ -1244,7 +1244,7 @@ static int duel_create(duel_run *R)
         return e;
     /* generation 0's parameters: [overrides] start later (from 1 on) */
     if (duel_config_at(&R->cfg, 0, &R->eff, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     if (R->cfg.n_over > 0 && R->cfg.reproduction != DUEL_REPRODUCE_LIBNEAT) {
@@ -1256,7 +1256,7 @@ static int duel_create(duel_run *R)
         /* a coevolution: as the Python package starts one (duel_runtag.c) */
         e = duel_coev_new(&R->coev, &R->eff, err, sizeof err);
         if (e)
-            fprintf(stderr, "duel_evolve: %s\n", err);
+            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         if (e == 0 && R->cfg.n_over > 0 && (e = duel_tag_run(R)) != 0)
             fprintf(stderr, "duel_evolve: cannot start: %s\n", neat_strerror(e)); /* the tag with the schedule */
         if (e == 0 && R->cfg.reproduction != DUEL_REPRODUCE_LIBNEAT) {
@@ -1272,7 +1272,7 @@ static int duel_create(duel_run *R)
         return e;
     }
     if (duel_start_genome(&R->cfg, &g, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     st.genome = &g;
@@ -1393,41 +1393,41 @@ static int duel_prepare_dir(duel_run *R)
     /* looked at before anything is created in it, and again under the lock */
     if (stat(R->dir, &st) == 0 && S_ISDIR(st.st_mode) && !duel_dir_is_runs(R->dir, err, sizeof err)) {
         fprintf(stderr, "duel_evolve: %s is not empty and not a run directory (it %s): choose another --out\n",
-                R->dir, err);
+                duel_esc(R->dir), duel_esc_msg(err));
         return 2;
     }
     if (duel_mkdir(R->dir) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", R->dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", duel_esc(R->dir), strerror(errno));
         return 2;
     }
     if (duel_take_lock(R->dir) != 0)
         return 2;
     if (!duel_dir_is_runs(R->dir, err, sizeof err)) {
         fprintf(stderr, "duel_evolve: %s is not empty and not a run directory (it %s): choose another --out\n",
-                R->dir, err);
+                duel_esc(R->dir), duel_esc_msg(err));
         return 2;
     }
     duel_path(path, sizeof path, R->dir, "champions");
     if (duel_mkdir(path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", duel_esc(path), strerror(errno));
         return 2;
     }
     duel_path(path, sizeof path, R->dir, "checkpoint.bin");
     if (stat(path, &st) == 0) { /* checked under the lock: two runs cannot both pass */
         fprintf(stderr, "duel_evolve: %s already holds a run: resume it with duel_evolve resume %s, or choose "
-                        "another --out\n", R->dir, R->dir);
+                        "another --out\n", duel_esc(R->dir), duel_esc(R->dir));
         return 2;
     }
     duel_path(path, sizeof path, R->dir, "games");
     if (R->record_games && duel_mkdir(path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", duel_esc(path), strerror(errno));
         return 2;
     }
     /* a directory left by a run that died before its first checkpoint starts over; one whose checkpoint
      * is gone but whose generations are recorded is not overwritten */
     if (duel_has_history(R->dir, err, sizeof err)) {
         fprintf(stderr, "duel_evolve: %s has no checkpoint.bin but holds %s: refusing to overwrite them (restore "
-                        "the checkpoint and resume, or choose another --out)\n", R->dir, err);
+                        "the checkpoint and resume, or choose another --out)\n", duel_esc(R->dir), duel_esc_msg(err));
         return 2;
     }
     for (i = 0; i < 3; i++) {
@@ -1506,12 +1506,12 @@ static int duel_run_main(int argc, char **argv)
         return 2;
     }
     if (duel_config_read(&R.cfg, config, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     if (duel_config_set_list(&R.cfg, (const char *const *)sets, n_sets, &k, err, sizeof err) != 0) {
         char esc[1100];
-        fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
+        fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), duel_esc_msg(err));
         return 2;
     }
     if (have_seed)
@@ -1520,7 +1520,7 @@ static int duel_run_main(int argc, char **argv)
         R.cfg.generations = gens;
     if (duel_config_check(&R.cfg, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s: %s\n", n_sets > 0 ? "the configuration with its --set overrides" : config,
-                err);
+                duel_esc_msg(err));
         return 2;
     }
     /* the populations first: a bad start topology (an unreadable blob) is refused before anything is made */
@@ -1554,7 +1554,7 @@ static int duel_check_start(duel_run *R, const char *ckpt)
         access(R->cfg.start.path, F_OK) != 0)
         return 0;
     if (duel_start_genome(&R->cfg, &want, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return -1;
     }
     same = duel_same_topology(have, &want);
@@ -1579,18 +1579,18 @@ static int duel_pop_ckpt_load(const char *path, neat_pop **out)
     if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
         if (errno == ENOENT)
             return 1;
-        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
     if (len >= 8 && memcmp(buf, "NEATCOEV", 8) == 0) {
         fprintf(stderr, "duel_evolve: %s: a coevolution's checkpoint, but config.ini names [opponents]: restore the "
-                        "run's config.ini\n", path);
+                        "run's config.ini\n", duel_esc(path));
         free(buf);
         return -1;
     }
     err = neat_pop_load(out, buf, len, NULL, &off);
     if (err)
-        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(err));
+        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", duel_esc(path), off, neat_strerror(err));
     free(buf);
     return err ? -1 : 0;
 }
@@ -1652,7 +1652,7 @@ static int duel_rebuild_dominance(duel_run *R)
             memcmp(have, want, wlen) != 0) {
             r = duel_file_replace(path, want, wlen) != 0;
             if (r)
-                fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, duel_file_strerror(errno));
+                fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), duel_file_strerror(errno));
             else
                 duel_log(R, "resume: %s was not the dominant of level %u: written again from the checkpoint", name,
                          k + 1u);
@@ -1676,7 +1676,7 @@ static int duel_rebuild_dominance(duel_run *R)
     if (r == 0)
         free(have);
     if (r != 0 && (errno == DUEL_ENOTREG || errno == EISDIR)) {
-        fprintf(stderr, "duel_evolve: %s: %s: refusing to replace it\n", path, duel_file_strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: %s: refusing to replace it\n", duel_esc(path), duel_file_strerror(errno));
         free(text);
         return 2;
     }
@@ -1688,7 +1688,7 @@ static int duel_rebuild_dominance(duel_run *R)
             duel_log(R, "resume: dominance.csv rebuilt from the checkpoint (%u level%s)", n, duel_s(n));
     }
     if (r)
-        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", duel_esc(path), duel_file_strerror(errno));
     free(text);
     return r;
 }
@@ -1791,9 +1791,9 @@ static int duel_check_generations(duel_run *R, uint32_t g)
     duel_path(path, sizeof path, R->dir, "generations.csv");
     if (duel_file_read(path, DUEL_GENERATIONS_MAX_FILE, &text, &len) != 0) {
         if (errno == ENOENT)
-            fprintf(stderr, "duel_evolve: %s: missing: " DUEL_GENERATIONS_LOST_ADVICE "\n", path);
+            fprintf(stderr, "duel_evolve: %s: missing: " DUEL_GENERATIONS_LOST_ADVICE "\n", duel_esc(path));
         else
-            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", path, duel_file_strerror(errno));
+            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), duel_file_strerror(errno));
         return 2;
     }
     /* the complete rows: a torn last one belongs to the generation after the checkpoint, or is lost (below) */
@@ -1804,18 +1804,18 @@ static int duel_check_generations(duel_run *R, uint32_t g)
     r = duel_generations_parse(path, (const char *)text, keep, &rows, &n, err, sizeof err);
     free(text);
     if (r == -3) { /* a CRLF copy or a duplicated row: the rows are there, the fix is named */
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     if (r != 0) {
-        fprintf(stderr, "duel_evolve: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", err);
+        fprintf(stderr, "duel_evolve: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", duel_esc_msg(err));
         return 2;
     }
     done = n > 0 ? rows[n - 1].generation + (rows[n - 1].pop == 'B') : 0;
     free(rows);
     if (done < g) {
         fprintf(stderr, "duel_evolve: %s holds %u generation%s but the checkpoint %u: " DUEL_GENERATIONS_LOST_ADVICE
-                        "\n", path, done, duel_s(done), g);
+                        "\n", duel_esc(path), done, duel_s(done), g);
         return 2;
     }
     return 0;
@@ -1867,7 +1867,7 @@ static int duel_check_edits(const duel_config *config_ini, const neat_params *np
         } else {
             fprintf(stderr, "duel_evolve: %s/config.ini says '%s' but the run in its checkpoint has '%s': a hand edit "
                             "of config.ini is not taken (give a change as --set KEY=VALUE, which is applied and "
-                            "logged, or restore config.ini)\n", dir, la, lb);
+                            "logged, or restore config.ini)\n", duel_esc(dir), la, lb);
             r = 2;
         }
     }
@@ -1890,7 +1890,7 @@ static int duel_take_checkpoint(duel_run *R, duel_config *before, const neat_par
     if (cp != NULL)
         R->cfg.coev = *cp;
     if (duel_config_set_list(&R->cfg, (const char *const *)sets, n_sets, NULL, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: --set: %s\n", err); /* not reached: the same overrides were applied before */
+        fprintf(stderr, "duel_evolve: --set: %s\n", duel_esc_msg(err)); /* not reached: the same overrides were applied before */
         return 2;
     }
     duel_log(R, "resume: %s, an override of a resume that played no generation: the run is the checkpoint's, and "
@@ -1910,7 +1910,7 @@ static int duel_resume_params(duel_run *R, duel_config *before, const neat_param
     char err[600];
     int e;
     if (duel_config_at(before, g > 0 ? g - 1u : 0, &played, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s/config.ini: %s\n", R->dir, err);
+        fprintf(stderr, "duel_evolve: %s/config.ini: %s\n", duel_esc(R->dir), duel_esc_msg(err));
         return 2;
     }
     /* a key this resume sets is a change made the right way, edited by hand to the same value or not */
@@ -1943,11 +1943,11 @@ static int duel_resume_schedule(duel_run *R, uint32_t g, char **psets, uint32_t 
     char err[600];
     if (n_psets > 0 && g < R->cfg.generations &&
         duel_config_add_override(&R->cfg, g, (const char *const *)psets, n_psets, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: resume: --set: %s\n", err);
+        fprintf(stderr, "duel_evolve: resume: --set: %s\n", duel_esc_msg(err));
         return 2;
     }
     if (duel_config_at(&R->cfg, g, &R->eff, err, sizeof err) != 0 || duel_config_check(&R->eff, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     R->first_applied = g + 1u;
@@ -1993,13 +1993,13 @@ static int duel_resume_main(int argc, char **argv)
     }
     duel_path(path, sizeof path, R.dir, "games");
     if (R.record_games && duel_mkdir(path) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot create: %s\n", duel_esc(path), strerror(errno));
         return 2;
     }
     duel_config_default(&R.cfg);
     duel_path(path, sizeof path, R.dir, "config.ini");
     if (duel_config_load(&R.cfg, path, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return 2;
     }
     before = R.cfg;
@@ -2007,7 +2007,7 @@ static int duel_resume_main(int argc, char **argv)
         /* libneat would go on where NEAT C++ 1.2.1 reproduced, whose populations no file holds */
         fprintf(stderr, "duel_evolve: %s: [run] reproduction = neat-cpp-1.2.1: a run reproduced by NEAT C++ 1.2.1's own "
                         "code cannot be resumed (the release's populations are in no file); start it again (it is "
-                        "deterministic: the same seed gives the same run)\n", path);
+                        "deterministic: the same seed gives the same run)\n", duel_esc(path));
         return 2;
     }
     if (duel_take_lock(R.dir) != 0)
@@ -2018,7 +2018,7 @@ static int duel_resume_main(int argc, char **argv)
         duel_config scratch = R.cfg;
         if (duel_config_set_list(&scratch, (const char *const *)sets, n_sets, &k, err, sizeof err) != 0) {
             char esc[1100];
-            fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), err);
+            fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(sets[k], esc, sizeof esc), duel_esc_msg(err));
             return 2;
         }
         for (k = 0; k < n_sets; k++) {
@@ -2069,7 +2069,7 @@ static int duel_resume_main(int argc, char **argv)
             duel_config_at(&R.cfg, UINT32_MAX, &scratch, err, sizeof err) != 0 ||
             duel_config_set_list(&scratch, (const char *const *)psets, n_psets, NULL, err, sizeof err) != 0 ||
             duel_config_check(&scratch, err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: %s\n", err);
+            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
             return 2;
         }
         if (scratch.neat.pop_size != R.cfg.neat.pop_size) {
@@ -2095,7 +2095,7 @@ static int duel_resume_main(int argc, char **argv)
          * generations and lost its checkpoint cannot go on */
         if (duel_has_history(R.dir, err, sizeof err)) {
             fprintf(stderr, "duel_evolve: %s: missing, but the run directory holds %s: cannot resume without it "
-                            "(restore it from a backup, or start a new run)\n", path, err);
+                            "(restore it from a backup, or start a new run)\n", duel_esc(path), duel_esc_msg(err));
             duel_run_free(&R);
             return 2;
         }
@@ -2135,7 +2135,7 @@ static int duel_resume_main(int argc, char **argv)
         size_t tlen = 0;
         const uint8_t *tag = neat_coev_game(R.coev, &tlen);
         if (neat_coev_seed(R.coev) != R.cfg.seed) {
-            fprintf(stderr, "duel_evolve: %s: seed %llu, but config.ini says %u\n", path,
+            fprintf(stderr, "duel_evolve: %s: seed %llu, but config.ini says %u\n", duel_esc(path),
                     (unsigned long long)neat_coev_seed(R.coev), R.cfg.seed);
             duel_run_free(&R);
             return 2;
@@ -2171,7 +2171,7 @@ static int duel_resume_main(int argc, char **argv)
         if (g_edit || e_edit) {
             fprintf(stderr, "duel_evolve: %s/config.ini says '%s = %u' but the run wrote '%s = %u': a hand edit of "
                             "config.ini is not taken (give a change as %s, which is applied and logged, or restore "
-                            "config.ini)\n", R.dir, g_edit ? "generations" : "strength_every",
+                            "config.ini)\n", duel_esc(R.dir), g_edit ? "generations" : "strength_every",
                     g_edit ? before.generations : before.strength_every, g_edit ? "generations" : "strength_every",
                     g_edit ? seal_gens : seal_every, g_edit ? "resume --generations N" : "--set strength_every=K");
             duel_run_free(&R);
@@ -2195,13 +2195,13 @@ static int duel_resume_main(int argc, char **argv)
     }
     duel_path(path, sizeof path, R.dir, "generations.csv");
     if (duel_csv_keep_before(path, g) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", duel_esc(path), duel_file_strerror(errno));
         duel_run_free(&R);
         return 1;
     }
     duel_path(path, sizeof path, R.dir, "strength.csv");
     if (duel_csv_keep_before(path, g) != 0) {
-        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", path, duel_file_strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot rewrite: %s\n", duel_esc(path), duel_file_strerror(errno));
         duel_run_free(&R);
         return 1;
     }
@@ -2233,7 +2233,7 @@ static int duel_resume_main(int argc, char **argv)
         duel_log(&R, "resume: generations %u -> %u (%s; config.ini now says %u)", before.generations,
                  R.cfg.generations, how, R.cfg.generations);
         if (!R.quiet)
-            fprintf(stderr, "%s %s from %u to %u generations (stored in config.ini)\n", R.dir, how,
+            fprintf(stderr, "%s %s from %u to %u generations (stored in config.ini)\n", duel_esc(R.dir), how,
                     before.generations, R.cfg.generations);
     }
     if (duel_write_config(&R) != 0) {
@@ -2246,7 +2246,7 @@ static int duel_resume_main(int argc, char **argv)
         duel_log(&R, "resume at generation %u of %u, %s", g, R.cfg.generations, th);
     }
     if (!R.quiet)
-        fprintf(stderr, "resuming %s at generation %u of %u\n", R.dir, g, R.cfg.generations);
+        fprintf(stderr, "resuming %s at generation %u of %u\n", duel_esc(R.dir), g, R.cfg.generations);
     return duel_go(&R);
 }
 
@@ -2259,14 +2259,14 @@ int duel_cmd_config(int argc, char **argv)
     duel_config_default(&cfg);
     for (i = 0; i < argc; i++) {
         if (i + 1 >= argc && (strcmp(argv[i], "--config") == 0 || strcmp(argv[i], "--set") == 0)) {
-            fprintf(stderr, "duel_evolve config: %s needs a value\n", argv[i]);
+            fprintf(stderr, "duel_evolve config: %s needs a value\n", duel_esc(argv[i]));
             return 2;
         }
         if (strcmp(argv[i], "--dump") == 0) {
             dump = 1;
         } else if (strcmp(argv[i], "--config") == 0 && i + 1 < argc) {
             if (duel_config_read(&cfg, argv[++i], err, sizeof err) != 0) {
-                fprintf(stderr, "duel_evolve: %s\n", err);
+                fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
                 return 2;
             }
             last = argv[i];
@@ -2282,7 +2282,7 @@ int duel_cmd_config(int argc, char **argv)
             i--;
             if (duel_config_set_list(&cfg, group, n, &bad, err, sizeof err) != 0) {
                 char esc[1100];
-                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(group[bad], esc, sizeof esc), err);
+                fprintf(stderr, "duel_evolve: --set %s: %s\n", duel_text_escape(group[bad], esc, sizeof esc), duel_esc_msg(err));
                 return 2;
             }
             last = group[n - 1];
@@ -2299,7 +2299,7 @@ int duel_cmd_config(int argc, char **argv)
     }
     if (duel_config_check(&cfg, err, sizeof err) != 0) {
         fprintf(stderr, "duel_evolve: %s%s%s%s\n", last && from_set ? "--set " : "", last ? last : "",
-                last ? ": " : "", err);
+                last ? ": " : "", duel_esc_msg(err));
         return 2;
     }
     duel_config_dump(stdout, &cfg);

@@ -116,7 +116,7 @@ int duel_ctrl_origin(const char *spec, duel_origin *o)
     r = duel_origin_of_bytes(spec, buf, len, o, NULL, NULL, NULL, 1, err, sizeof err);
     free(buf);
     if (r != 0)
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
     return r;
 }
 
@@ -148,7 +148,7 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
         r = duel_origin_of_bytes(path, file, *len, o, &g, &ni, &no, want_world, err, sizeof err);
         free(file);
         if (r != 0) {
-            fprintf(stderr, "duel_evolve: %s\n", err);
+            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
             *len = 0;
             return -1;
         }
@@ -168,7 +168,7 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
     if (r == 0) {
         if (duel_origin_of_bytes(path, *blob, *len, o, NULL, NULL, NULL, want_world, err, sizeof err) == 0)
             return 0;
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         free(*blob);
         *blob = NULL;
         *len = 0;
@@ -263,7 +263,7 @@ void duel_fixed_run_refused(const char *prefix, const char *path)
 {
     fprintf(stderr, "duel_evolve: %s%s: the checkpoint of a run against fixed opponents (one population, no dominance "
                     "tournament): compare, ladder and experiment measure coevolution runs; play its champions "
-                    "instead (champions/gen-G.blob)\n", prefix, path);
+                    "instead (champions/gen-G.blob)\n", prefix, duel_esc(path));
 }
 
 int duel_run_is_fixed(const char *dir)
@@ -289,7 +289,7 @@ int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
     if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
         if (errno == ENOENT)
             return 1;
-        fprintf(stderr, "duel_evolve: %s%s: cannot read: %s\n", prefix, path,
+        fprintf(stderr, "duel_evolve: %s%s: cannot read: %s\n", prefix, duel_esc(path),
                 errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
@@ -302,9 +302,9 @@ int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
     if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && memcmp(buf, "NEATCOEV", 8) == 0) {
         v = (uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24;
         fprintf(stderr, "duel_evolve: %s%s: offset 8: checkpoint format %lu, but this duel_evolve reads format %d "
-                        "(docs/formats.md)\n", prefix, path, (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
+                        "(docs/formats.md)\n", prefix, duel_esc(path), (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
     } else if (err) {
-        fprintf(stderr, "duel_evolve: %s%s: offset %zu: %s\n", prefix, path, off, neat_strerror(err));
+        fprintf(stderr, "duel_evolve: %s%s: offset %zu: %s\n", prefix, duel_esc(path), off, neat_strerror(err));
     }
     free(buf);
     return err ? -1 : 0;
@@ -320,7 +320,7 @@ int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r)
     }
     /* the rules' bytes come first; what follows is the run's own (docs/tools.md, "The run directory") */
     if (duel_rules_decode(r, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, &off) != DUEL_OK) {
-        fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged at byte %zu of %zu\n", path,
+        fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged at byte %zu of %zu\n", duel_esc(path),
                 off, len);
         return -1;
     }
@@ -335,7 +335,7 @@ int duel_run_world(const char *dir, duel_rules *r)
     size_t len = 0;
     int e;
     if ((size_t)snprintf(path, sizeof path, "%s/checkpoint.bin", dir) >= sizeof path) {
-        fprintf(stderr, "duel_evolve: %s: the path is too long\n", dir);
+        fprintf(stderr, "duel_evolve: %s: the path is too long\n", duel_esc(dir));
         return -1;
     }
     /* a run against fixed opponents checkpoints one population: its tag the same */
@@ -348,14 +348,14 @@ int duel_run_world(const char *dir, duel_rules *r)
         e = neat_pop_load(&pop, buf, len, NULL, &off);
         free(buf);
         if (e) {
-            fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", path, off, neat_strerror(e));
+            fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", duel_esc(path), off, neat_strerror(e));
             return -1;
         }
         tag = neat_pop_game(pop, &tlen);
         e = tlen >= DUEL_RULES_BYTES ? duel_rules_decode(r, tag, DUEL_RULES_BYTES, &off) : DUEL_E_RULES;
         neat_pop_free(pop);
         if (e != DUEL_OK) {
-            fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are missing or damaged\n", path);
+            fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are missing or damaged\n", duel_esc(path));
             return -1;
         }
         return 0;
@@ -390,7 +390,7 @@ int duel_ctrl_world(const char *const *specs, int n, duel_rules *r, int *found)
             continue;
         if (*found && !duel_rules_equal(&o.world, r)) {
             fprintf(stderr, "duel_evolve: %s is of world %s, %s of world %s: give --world to play them in one\n",
-                    first, duel_world_label(r, a, sizeof a), specs[i], duel_world_label(&o.world, b, sizeof b));
+                    duel_esc(first), duel_world_label(r, a, sizeof a), duel_esc(specs[i]), duel_world_label(&o.world, b, sizeof b));
             return -1;
         }
         if (!*found)

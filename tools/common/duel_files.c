@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "duel_files.h"
+#include "duel_text.h"
 
 static int duel_write_all(int fd, const void *data, size_t len)
 {
@@ -400,12 +401,12 @@ int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
     FILE *mem = open_memstream(&text, &len);
     int r;
     if (mem == NULL) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
+        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
         return 1;
     }
     write(mem, ctx);
     if (fclose(mem) != 0) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", path);
+        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
         free(text);
         return 1;
     }
@@ -413,7 +414,7 @@ int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
     free(text);
     if (r == 0)
         return 0;
-    fprintf(stderr, "duel_evolve: %s: %s: %s\n", path, r == -1 ? "cannot write" : "write failed", strerror(errno));
+    fprintf(stderr, "duel_evolve: %s: %s: %s\n", duel_esc(path), r == -1 ? "cannot write" : "write failed", strerror(errno));
     return r == -1 ? 2 : 1;
 }
 

@@ -23,7 +23,7 @@ int duel_genome_read(const char *path, neat_genome *g, uint32_t *n_inputs, uint3
     r = duel_genome_parse(path, buf, len, g, n_inputs, n_outputs, err, sizeof err);
     free(buf);
     if (r != 0)
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
     return r;
 }
 
@@ -60,12 +60,12 @@ int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs,
     size_t len = 0;
     int err = neat_genome_save_origin(g, n_inputs, n_outputs, origin, &buf, &len, NULL), r;
     if (err) {
-        fprintf(stderr, "duel_evolve: %s: cannot encode the genome: %s\n", path, neat_strerror(err));
+        fprintf(stderr, "duel_evolve: %s: cannot encode the genome: %s\n", duel_esc(path), neat_strerror(err));
         return -1;
     }
     r = duel_file_replace(path, buf, len);
     if (r != 0)
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     free(buf);
     return r;
 }

@@ -7,6 +7,7 @@
 #include "neat_coev.h"
 #include "duel_dominance.h"
 #include "duel_levels.h"
+#include "duel_text.h"
 
 int duel_levels_read(const char *dir, duel_level **out, uint32_t *n_out)
 {
@@ -20,17 +21,17 @@ int duel_levels_read(const char *dir, duel_level **out, uint32_t *n_out)
         return -1;
     }
     if (duel_dominance_read(dir, &rows, &n, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return -1;
     }
     if (n == 0) {
-        fprintf(stderr, "duel_evolve: %s/dominance.csv: no dominant strategy yet\n", dir);
+        fprintf(stderr, "duel_evolve: %s/dominance.csv: no dominant strategy yet\n", duel_esc(dir));
         free(rows);
         return -1;
     }
     levels = (duel_level *)calloc(n, sizeof *levels);
     if (levels == NULL) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", dir);
+        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(dir));
         free(rows);
         return -1;
     }
@@ -77,7 +78,7 @@ int duel_levels_check(const char *dir, const duel_level *levels, uint32_t n)
         size_t len;
         if (k >= doms || k >= n) {
             fprintf(stderr, "duel_evolve: %s/dominance.csv: %u levels, but the checkpoint has %u: resume the run to "
-                            "repair it\n", dir, n, doms);
+                            "repair it\n", duel_esc(dir), n, doms);
             neat_coev_free(c);
             return -1;
         }
@@ -85,18 +86,18 @@ int duel_levels_check(const char *dir, const duel_level *levels, uint32_t n)
         if (d.generation != levels[k].generation || d.pop != (uint32_t)(levels[k].pop[0] == 'B')) {
             fprintf(stderr, "duel_evolve: %s/dominance.csv: level %u says generation %u (%s), but the checkpoint's "
                             "is generation %u (%s): an edited or transplanted row; resume the run to rebuild it\n",
-                    dir, k + 1u, levels[k].generation, levels[k].pop, d.generation, d.pop ? "B" : "A");
+                    duel_esc(dir), k + 1u, levels[k].generation, levels[k].pop, d.generation, d.pop ? "B" : "A");
             neat_coev_free(c);
             return -1;
         }
         e = duel_genome_blob(d.genome, np->n_inputs, np->n_outputs, np->net_step, &want, &len);
         if (e == 0 && (len != levels[k].ctrl.blob_len || memcmp(want, levels[k].ctrl.blob, len) != 0)) {
             fprintf(stderr, "duel_evolve: %s/champions/gen-%05u.blob is not the checkpoint's dominant of level %u (a "
-                            "file put in its place): resume the run to write it again\n", dir, levels[k].generation,
+                            "file put in its place): resume the run to write it again\n", duel_esc(dir), levels[k].generation,
                     k + 1u);
             e = -1;
         } else if (e != 0) {
-            fprintf(stderr, "duel_evolve: %s: level %u: %s\n", dir, k + 1u, neat_strerror(e));
+            fprintf(stderr, "duel_evolve: %s: level %u: %s\n", duel_esc(dir), k + 1u, neat_strerror(e));
             e = -1;
         }
         free(want);

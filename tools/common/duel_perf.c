@@ -16,6 +16,7 @@
 #include "duel_perf.h"
 #include "duel_world_cfg.h"
 #include "neat_coev.h"
+#include "duel_text.h"
 
 /* DIR is a run that has played every generation of its config.ini, and its
  * dominance.csv holds the levels its checkpoint does. */
@@ -28,7 +29,7 @@ static uint32_t duel_perf_csv_generations(const char *dir, const char *pre)
     char err[4400];
     uint32_t done;
     if (duel_generations_read(dir, &rows, &n, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", pre, err);
+        fprintf(stderr, "duel_evolve: %s%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", pre, duel_esc_msg(err));
         return UINT32_MAX;
     }
     done = duel_generations_done(rows, n);
@@ -48,18 +49,18 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
     memset(r, 0, sizeof *r);
     r->dir = dir;
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: %s%s: not a run directory (%s)\n", pre, dir,
+        fprintf(stderr, "duel_evolve: %s%s: not a run directory (%s)\n", pre, duel_esc(dir),
                 stat(dir, &st) != 0 ? strerror(errno) : "not a directory");
         return -1;
     }
     if (realpath(dir, r->real) == NULL) {
-        fprintf(stderr, "duel_evolve: %s%s: %s\n", pre, dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: %s%s: %s\n", pre, duel_esc(dir), strerror(errno));
         return -1;
     }
     duel_config_default(&cfg);
     snprintf(path, sizeof path, "%s/config.ini", dir);
     if (duel_config_load(&cfg, path, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
+        fprintf(stderr, "duel_evolve: %s%s\n", pre, duel_esc_msg(err));
         return -1;
     }
     r->net_step = cfg.neat.net_step;
@@ -68,7 +69,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         e = duel_ckpt_load(pre, path, &c);
         if (e > 0)
             fprintf(stderr, "duel_evolve: %s%s: missing: not a run directory, or one that never finished a "
-                            "generation\n", pre, path);
+                            "generation\n", pre, duel_esc(path));
         if (e != 0)
             return -1;
         gen = neat_coev_generation(c);
@@ -83,7 +84,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         r->world = cfg.world;
     }
     if (gen < cfg.generations) {
-        fprintf(stderr, "duel_evolve: %s%s: not a finished run (%u of %u generations): resume it first\n", pre, dir,
+        fprintf(stderr, "duel_evolve: %s%s: not a finished run (%u of %u generations): resume it first\n", pre, duel_esc(dir),
                 gen, cfg.generations);
         return -1;
     }
@@ -192,7 +193,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
         m->n_runs++;
         for (j = 0; j < i; j++)
             if (strcmp(m->runs[j].real, m->runs[i].real) == 0) {
-                fprintf(stderr, "duel_evolve: %s%s is given twice as a candidate\n", pre, cand[i]);
+                fprintf(stderr, "duel_evolve: %s%s is given twice as a candidate\n", pre, duel_esc(cand[i]));
                 goto out;
             }
     }
@@ -204,7 +205,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
             ;
         for (k = 0; k < m->n_rank; k++)
             if (m->rank[k] == j) {
-                fprintf(stderr, "duel_evolve: %s%s is given twice after --against\n", pre, against[i]);
+                fprintf(stderr, "duel_evolve: %s%s is given twice after --against\n", pre, duel_esc(against[i]));
                 duel_perf_close(&r);
                 goto out;
             }
@@ -220,8 +221,8 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
         if (!duel_rules_equal(&m->runs[i].world, &m->runs[0].world)) {
             char a[40], b[40];
             fprintf(stderr, "duel_evolve: %s%s was made in world %s, %s in world %s: runs of different worlds are "
-                            "not compared\n", pre, m->runs[0].dir, duel_world_label(&m->runs[0].world, a, sizeof a),
-                    m->runs[i].dir, duel_world_label(&m->runs[i].world, b, sizeof b));
+                            "not compared\n", pre, duel_esc(m->runs[0].dir), duel_world_label(&m->runs[0].world, a, sizeof a),
+                    duel_esc(m->runs[i].dir), duel_world_label(&m->runs[i].world, b, sizeof b));
             goto out;
         }
     m->world = m->runs[0].world;
@@ -253,7 +254,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
         }
         if (mine == 0) {
             fprintf(stderr, "duel_evolve: %s%s: an empty ranking: --against names no run but itself\n", pre,
-                    m->runs[i].dir);
+                    duel_esc(m->runs[i].dir));
             goto out;
         }
     }
@@ -270,7 +271,7 @@ static void duel_perf_save(duel_cmp_cache *c, uint32_t n, const char *pre, int *
         if (duel_cmp_cache_save(&c[i]) != 0 && !*failed) {
             *failed = 1;
             fprintf(stderr, "duel_evolve: %s%s: cannot write the cache (%s); the results are not affected\n", pre,
-                    c[i].path, strerror(errno));
+                    duel_esc(c[i].path), strerror(errno));
         }
 }
 
@@ -317,14 +318,14 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     if (caches == NULL)
         DUEL_PERF_OOM(m);
     if (o->cache_path != NULL && duel_perf_cache_open(&shared, o->cache_path, o, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
+        fprintf(stderr, "duel_evolve: %s%s\n", pre, duel_esc_msg(err));
         goto out;
     }
     for (i = 0; i < m->n_cand && o->cache_path == NULL; i++) {
         char path[4200];
         snprintf(path, sizeof path, "%s/compare-cache.csv", m->runs[i].dir);
         if (duel_perf_cache_open(&caches[i], path, o, err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: %s%s\n", pre, err);
+            fprintf(stderr, "duel_evolve: %s%s\n", pre, duel_esc_msg(err));
             goto out;
         }
     }
@@ -360,7 +361,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     }
     if (n_jobs > 0 && o->mode == DUEL_PERF_CACHE_ONLY) {
         fprintf(stderr, "duel_evolve: %s%u comparisons are not in the caches (the first: %s against %s): they would "
-                        "have to be played\n", pre, n_jobs, jobs[0].a->name, jobs[0].b->name);
+                        "have to be played\n", pre, n_jobs, duel_esc(jobs[0].a->name), duel_esc(jobs[0].b->name));
         goto out;
     }
     /* played a chunk at a time, each chunk's results saved in the caches at once: a compare killed midway keeps

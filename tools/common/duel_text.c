@@ -4,7 +4,8 @@
 
 #include "duel_text.h"
 
-const char *duel_text_escape(const char *s, char *buf, size_t cap)
+/* backslash: '\\' doubled too (a value), or kept (a message that may hold escaped values already) */
+static const char *duel_text_escape_as(const char *s, char *buf, size_t cap, int backslash)
 {
     size_t n = 0;
     for (; *s != '\0'; s++) {
@@ -14,7 +15,7 @@ const char *duel_text_escape(const char *s, char *buf, size_t cap)
         if (c < 0x20 || c == 0x7f) {
             snprintf(esc, sizeof esc, "\\x%02x", (unsigned)c);
             len = 4;
-        } else if (c == '\\') {
+        } else if (c == '\\' && backslash) {
             esc[0] = esc[1] = '\\';
             len = 2;
         } else {
@@ -28,6 +29,11 @@ const char *duel_text_escape(const char *s, char *buf, size_t cap)
     }
     buf[n] = '\0';
     return buf;
+}
+
+const char *duel_text_escape(const char *s, char *buf, size_t cap)
+{
+    return duel_text_escape_as(s, buf, cap, 1);
 }
 
 void duel_csv_field(FILE *f, const char *s)
@@ -51,4 +57,12 @@ const char *duel_esc(const char *s)
     static unsigned next;
     char *b = buf[next++ % DUEL_ESC_SLOTS];
     return duel_text_escape(s != NULL ? s : "", b, sizeof buf[0]);
+}
+
+const char *duel_esc_msg(const char *s)
+{
+    static char buf[DUEL_ESC_SLOTS][8192];
+    static unsigned next;
+    char *b = buf[next++ % DUEL_ESC_SLOTS];
+    return duel_text_escape_as(s != NULL ? s : "", b, sizeof buf[0], 0);
 }

@@ -12,6 +12,10 @@ const char *duel_text_escape(const char *s, char *buf, size_t cap);
  * message, at most that many in one call; the main thread's messages only. */
 #define DUEL_ESC_SLOTS 4
 const char *duel_esc(const char *s);
+/* A whole message built elsewhere (an err buffer naming a file): its control bytes escaped, backslashes kept (so
+ * that values escaped in it already stay as they are), in one of DUEL_ESC_SLOTS buffers of 8192 bytes; the main
+ * thread's messages only. */
+const char *duel_esc_msg(const char *s);
 
 /* s as one CSV field (RFC 4180): as it is, or in double quotes (each '"' doubled) when it holds a comma, a
  * quote, a CR or a LF. */

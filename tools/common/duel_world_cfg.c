@@ -7,6 +7,7 @@
 #include "duel_world_cfg.h"
 #include "neat_config.h"
 #include "neat_ini.h"
+#include "duel_text.h"
 
 const char *const duel_world_keys[] = {"rules",        "radius",     "start_west", "start_east",  "start_energy",
                                        "food_energy",  "eat_dist",   "share_dist", "train_food",  "candidates",
@@ -309,11 +310,11 @@ static int duel_world_read(duel_rules *r, const char *path, int *seen)
     f.r = r;
     f.seen = 0;
     if (neat_ini_parse_file(path, duel_world_ini, &f, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", err);
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         return -1;
     }
     if (duel_world_check(r, msg, sizeof msg) != 0) {
-        fprintf(stderr, "duel_evolve: %s: %s\n", path, msg);
+        fprintf(stderr, "duel_evolve: %s: %s\n", duel_esc(path), duel_esc_msg(msg));
         return -1;
     }
     *seen = f.seen;
@@ -329,13 +330,13 @@ int duel_world_arg(duel_rules *r, const char *spec)
         return 0;
     }
     if (strchr(spec, '/') == NULL && strchr(spec, '.') == NULL) {
-        fprintf(stderr, "duel_evolve: --world %s: no such world (known: v1) and not a file path\n", spec);
+        fprintf(stderr, "duel_evolve: --world %s: no such world (known: v1) and not a file path\n", duel_esc(spec));
         return -1;
     }
     if (duel_world_read(r, spec, &seen) != 0)
         return -1;
     if (!seen) {
-        fprintf(stderr, "duel_evolve: --world %s: the file has no [world] section\n", spec);
+        fprintf(stderr, "duel_evolve: --world %s: the file has no [world] section\n", duel_esc(spec));
         return -1;
     }
     return 0;
@@ -346,7 +347,7 @@ int duel_world_of_run(duel_rules *r, const char *run_dir)
     char path[4200];
     int seen;
     if ((size_t)snprintf(path, sizeof path, "%s/config.ini", run_dir) >= sizeof path) {
-        fprintf(stderr, "duel_evolve: %s: the path is too long\n", run_dir);
+        fprintf(stderr, "duel_evolve: %s: the path is too long\n", duel_esc(run_dir));
         return -1;
     }
     return duel_world_read(r, path, &seen);

@@ -22,6 +22,7 @@
 #include "duel_perf.h"
 #include "duel_signal.h"
 #include "neat_coev.h"
+#include "duel_text.h"
 
 /* Set by SIGINT/SIGTERM: the runs finish their generation and stop (they get the signal too). */
 static volatile sig_atomic_t duel_exp_stop = 0;
@@ -74,7 +75,7 @@ static int duel_exp_check_runs(const duel_plan *p, const char *dir)
         }
         if (k == 0) {
             fprintf(stderr, "duel_evolve: experiment: %s/runs/%s is no run of this plan (its runs are NAME-1 to "
-                            "NAME-RUNS of each [method NAME]): move it away, or use another directory\n", dir,
+                            "NAME-RUNS of each [method NAME]): move it away, or use another directory\n", duel_esc(dir),
                     e->d_name);
             rc = 2;
             break;
@@ -100,7 +101,7 @@ static int duel_exp_check_runs(const duel_plan *p, const char *dir)
             free(canon);
             if (line != 0) {
                 fprintf(stderr, "duel_evolve: experiment: %s/%s belongs to another plan: line %u is '%s', the plan "
-                                "gives '%s'\n", dir, path, line, have_line, want_line);
+                                "gives '%s'\n", duel_esc(dir), duel_esc(path), line, have_line, want_line);
                 rc = 2;
             }
         } else {
@@ -129,27 +130,27 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
     }
     if (stat(dir, &st) != 0) {
         if (!create) {
-            fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir, strerror(errno));
+            fprintf(stderr, "duel_evolve: experiment: %s: %s\n", duel_esc(dir), strerror(errno));
             free(text);
             return 2;
         }
         if (duel_mkdir(dir) != 0) {
-            fprintf(stderr, "duel_evolve: experiment: %s: cannot create: %s\n", dir, strerror(errno));
+            fprintf(stderr, "duel_evolve: experiment: %s: cannot create: %s\n", duel_esc(dir), strerror(errno));
             free(text);
             return 2;
         }
     } else if (!S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: experiment: %s: not a directory\n", dir);
+        fprintf(stderr, "duel_evolve: experiment: %s: not a directory\n", duel_esc(dir));
         free(text);
         return 2;
     }
     if (chdir(dir) != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", duel_esc(dir), strerror(errno));
         free(text);
         return 2;
     }
     if (lock.dir_fd < 0 && lock.file_fd < 0 && duel_dir_lock(".", &lock) != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir,
+        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", duel_esc(dir),
                 errno == EWOULDBLOCK ? "another duel_evolve experiment is working in it"
                 : errno == ELOOP     ? ".lock is a symbolic link: refusing to follow it (remove it)"
                                      : strerror(errno));
@@ -172,12 +173,12 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
         free(h);
         if (line != 0) {
             fprintf(stderr, "duel_evolve: experiment: %s/plan.ini holds another plan: line %u is '%s', this plan "
-                            "gives '%s' (a changed plan needs a new directory)\n", dir, line, la, lb);
+                            "gives '%s' (a changed plan needs a new directory)\n", duel_esc(dir), line, la, lb);
             free(text);
             return 2;
         }
     } else if (errno != ENOENT) {
-        fprintf(stderr, "duel_evolve: experiment: %s/plan.ini: %s\n", dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: experiment: %s/plan.ini: %s\n", duel_esc(dir), strerror(errno));
         free(text);
         return 2;
     } else {
@@ -190,7 +191,7 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
         if (d != NULL)
             closedir(d);
         if (other || !create) {
-            fprintf(stderr, "duel_evolve: experiment: %s: %s\n", dir,
+            fprintf(stderr, "duel_evolve: experiment: %s: %s\n", duel_esc(dir),
                     create ? "not empty and not an experiment directory (no plan.ini): choose another --out"
                            : "not an experiment directory (no plan.ini)");
             free(text);
@@ -224,7 +225,7 @@ int duel_exp_enter(const duel_plan *p, const char *dir, int create)
             }
             if (duel_plan_diff((const char *)have, p->m[i].cfg_text, la, lb, sizeof la) != 0) {
                 fprintf(stderr, "duel_evolve: experiment: %s/%s differs from what the plan's preset gives now "
-                                "('%s' there, '%s' now): a changed plan needs a new directory\n", dir, path, la, lb);
+                                "('%s' there, '%s' now): a changed plan needs a new directory\n", duel_esc(dir), duel_esc(path), la, lb);
                 free(have);
                 return 2;
             }
@@ -493,7 +494,7 @@ static int duel_exp_choose_best(const duel_plan *p, uint32_t threads)
             free(have);
             if (!same) {
                 fprintf(stderr, "duel_evolve: experiment: %s is not %s, the champion this plan chooses: it was "
-                                "changed by hand\n", DUEL_PLAN_BEST_BLOB, path);
+                                "changed by hand\n", DUEL_PLAN_BEST_BLOB, duel_esc(path));
                 rc = 2;
             }
         } else if (duel_file_replace(DUEL_PLAN_BEST_BLOB, top->ctrl.blob, top->ctrl.blob_len) != 0) {
@@ -508,7 +509,7 @@ static int duel_exp_choose_best(const duel_plan *p, uint32_t threads)
         }
         if (rc == 0 && chosen_now)
             fprintf(stderr, "experiment: the best %s champion: %s (level %u, %u hidden, %u connections, performance "
-                            "%.1f %%)\n", m->name, path, perf.runs[best].n_levels, top->hidden, top->conns,
+                            "%.1f %%)\n", m->name, duel_esc(path), perf.runs[best].n_levels, top->hidden, top->conns,
                     100.0 * perf.perf_hi[best]);
     }
     duel_perf_free(&perf);
@@ -615,7 +616,7 @@ static int duel_exp_play_runs(duel_exp_sched *s, const char *self, uint32_t jobs
             if (!duel_exp_stop) {
                 if (s->tty && !s->quiet)
                     fprintf(stderr, "\r\033[K");
-                fprintf(stderr, "duel_evolve: experiment: %s failed (%s %d)%s\n", s->runs[k].dir,
+                fprintf(stderr, "duel_evolve: experiment: %s failed (%s %d)%s\n", duel_esc(s->runs[k].dir),
                         WIFEXITED(status) ? "exit status" : "signal",
                         WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status),
                         duel_exp_log_hint(s->runs[k].dir, hint, sizeof hint));
@@ -829,7 +830,7 @@ static int duel_exp_play_mpi(duel_exp_sched *s)
             fprintf(stderr, "duel_evolve: experiment: %s of %s failed (exit status %d)%s\n",
                     slot[which].kind == DUEL_TASK_RUN ? "the run" : slot[which].kind == DUEL_TASK_COMPARE ?
                                                                      "the comparison" : "the ladder",
-                    s->runs[k].dir, status,
+                    duel_esc(s->runs[k].dir), status,
                     slot[which].kind == DUEL_TASK_RUN ? duel_exp_log_hint(s->runs[k].dir, hint, sizeof hint) : "");
             failed = status == 2 ? 2 : 1;
         }
@@ -996,14 +997,14 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
         }
     }
     if (duel_mkdir("runs") != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s/runs: cannot create: %s\n", dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: experiment: %s/runs: cannot create: %s\n", duel_esc(dir), strerror(errno));
         free(s.runs);
         return 1;
     }
     if (!o->quiet && duel_mpi_size() > 1)
-        fprintf(stderr, "experiment %s: %u methods, %u runs (%u done)\n", dir, p->n_methods, s.n_runs, s.done);
+        fprintf(stderr, "experiment %s: %u methods, %u runs (%u done)\n", duel_esc(dir), p->n_methods, s.n_runs, s.done);
     else if (!o->quiet)
-        fprintf(stderr, "experiment %s: %u methods, %u runs (%u done), %u side by side with %u thread%s each\n", dir,
+        fprintf(stderr, "experiment %s: %u methods, %u runs (%u done), %u side by side with %u thread%s each\n", duel_esc(dir),
                 p->n_methods, s.n_runs, s.done, jobs, threads, threads == 1 ? "" : "s");
     duel_signal_install(&duel_exp_stop, "duel_evolve: experiment: a second signal: stopped at once; the runs keep "
                                         "their last generation (duel_evolve experiment resume continues)\n");
@@ -1020,7 +1021,7 @@ int duel_exp_run(const duel_plan *p, const char *dir, const duel_exp_opts *o)
     free(s.runs);
     if (rc == 130) {
         fprintf(stderr, "duel_evolve: experiment: interrupted; what is done is kept. Continue with: duel_evolve "
-                        "experiment resume %s\n", dir);
+                        "experiment resume %s\n", duel_esc(dir));
         return rc;
     }
     if (rc != 0)

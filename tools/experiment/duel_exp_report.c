@@ -17,6 +17,7 @@
 #include "duel_perf.h"
 #include "duel_stats.h"
 #include "duel_world_cfg.h"
+#include "duel_text.h"
 
 #ifndef DUEL_PLOT_SCRIPT
 #define DUEL_PLOT_SCRIPT "plot_experiment.py"
@@ -124,19 +125,19 @@ static int rep_ladder_line(void *ud, uint32_t line, char *text)
     if (line == 1) {
         if ((n != 7 + 2 * DUEL_N_BUILTINS && n != 9 + 2 * DUEL_N_BUILTINS) || strcmp(f[0], "level") != 0) {
             fprintf(stderr, "duel_evolve: experiment: %s:1: not the ladder.csv of this version (delete it: the "
-                            "experiment writes it again)\n", c->path);
+                            "experiment writes it again)\n", duel_esc(c->path));
             return -1;
         }
         for (b = 0; b < DUEL_N_BUILTINS; b++)
             if (strncmp(f[5 + 2 * b], duel_builtin_name((int)b), strlen(duel_builtin_name((int)b))) != 0) {
                 fprintf(stderr, "duel_evolve: experiment: %s:1: built-in strategy %s expected in column %u\n",
-                        c->path, duel_builtin_name((int)b), 6 + 2 * b);
+                        duel_esc(c->path), duel_builtin_name((int)b), 6 + 2 * b);
                 return -1;
             }
         return 0;
     }
     if (n != c->fields) {
-        fprintf(stderr, "duel_evolve: experiment: %s:%u: %u fields, expected %u\n", c->path, line, n, c->fields);
+        fprintf(stderr, "duel_evolve: experiment: %s:%u: %u fields, expected %u\n", duel_esc(c->path), line, n, c->fields);
         return -1;
     }
     /* the last row is the top dominant's */
@@ -154,11 +155,11 @@ static int rep_read_run(rep *R, rep_run *r)
     rep_ladder_ctx lc;
     int e;
     if (duel_dominance_read_scores(r->dir, &r->rows, &r->n_levels, &r->scores, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s/%s\n", R->dir, err);
+        fprintf(stderr, "duel_evolve: experiment: %s/%s\n", duel_esc(R->dir), duel_esc_msg(err));
         return 2;
     }
     if (r->n_levels == 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s/%s/dominance.csv: no dominance level\n", R->dir, r->dir);
+        fprintf(stderr, "duel_evolve: experiment: %s/%s/dominance.csv: no dominance level\n", duel_esc(R->dir), r->dir);
         return 2;
     }
     /* the world and step the run was made with: the report names them, and refuses runs of several worlds */
@@ -172,18 +173,18 @@ static int rep_read_run(rep *R, rep_run *r)
     lc.fields = 0; /* set by the header line, which rep_lines reads first */
     e = rep_lines(path, rep_ladder_line, &lc);
     if (e == -1)
-        fprintf(stderr, "duel_evolve: experiment: %s/%s: %s (continue the experiment to play its ladder)\n", R->dir,
-                path, strerror(errno));
+        fprintf(stderr, "duel_evolve: experiment: %s/%s: %s (continue the experiment to play its ladder)\n", duel_esc(R->dir),
+                duel_esc(path), strerror(errno));
     else if (e == 0 && !lc.ok)
         fprintf(stderr, "duel_evolve: experiment: %s/%s: its last row is not the run's level %u (delete it: the "
-                        "experiment writes it again)\n", R->dir, path, r->n_levels);
+                        "experiment writes it again)\n", duel_esc(R->dir), duel_esc(path), r->n_levels);
     if (e != 0 || !lc.ok)
         return 2;
     {
         duel_gen_row *g;
         size_t n, k;
         if (duel_generations_read(r->dir, &g, &n, err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: experiment: %s/%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", R->dir, err);
+            fprintf(stderr, "duel_evolve: experiment: %s/%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", duel_esc(R->dir), duel_esc_msg(err));
             return 2;
         }
         for (k = 0; k < n; k++)
@@ -629,7 +630,7 @@ static void rep_write_strength(FILE *f, const void *ctx)
         snprintf(path, sizeof path, "%s/strength.csv", x->r->dir);
         x->path = path;
         if (access(path, F_OK) == 0 && rep_lines(path, rep_strength_line, x) != 0 && !x->bad) {
-            fprintf(stderr, "duel_evolve: experiment: %s: cannot read: %s\n", path, strerror(errno));
+            fprintf(stderr, "duel_evolve: experiment: %s: cannot read: %s\n", duel_esc(path), strerror(errno));
             x->bad = 1;
         }
     }
@@ -686,7 +687,7 @@ static int rep_fig7_random(const rep *R, const char *path)
             for (g = 0; g < 4 * x.rr.gmax; g++)
                 x.rr.cur[g] = g % 2 == 0 ? -1.0 : 0.0;
             if (duel_generations_read(R->runs[R->m[i].first + k].dir, &rows, &n, err, sizeof err) != 0) {
-                fprintf(stderr, "duel_evolve: experiment: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", err);
+                fprintf(stderr, "duel_evolve: experiment: %s: " DUEL_GENERATIONS_LOST_ADVICE "\n", duel_esc_msg(err));
                 free(x.rr.sum);
                 free(x.rr.cur);
                 return 1;
@@ -825,7 +826,7 @@ static int rep_plot(const char *dir)
     if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         fprintf(stderr, "duel_evolve: experiment: the figures were not drawn (%s %s report failed); the tables and "
                         "the figures' data are in %s/report; draw them again with duel_evolve experiment report %s\n",
-                py, script, dir, dir);
+                py, script, duel_esc(dir), duel_esc(dir));
         return 1;
     }
     return 0;
@@ -865,7 +866,7 @@ int duel_exp_report_here(const duel_plan *p, const char *dir)
         if (!duel_rules_equal(&R.runs[k].world, &R.runs[0].world)) {
             char a[40], b[40];
             fprintf(stderr, "duel_evolve: experiment: %s: runs of several worlds: %s is of world %s, %s of world %s; "
-                            "a report compares runs of one world\n", dir, R.runs[0].dir,
+                            "a report compares runs of one world\n", duel_esc(dir), R.runs[0].dir,
                     duel_world_label(&R.runs[0].world, a, sizeof a), R.runs[k].dir,
                     duel_world_label(&R.runs[k].world, b, sizeof b));
             rc = 2;
@@ -878,7 +879,7 @@ int duel_exp_report_here(const duel_plan *p, const char *dir)
             fprintf(stderr, "duel_evolve: experiment: report: out of memory\n");
     }
     if (rc == 0 && duel_mkdir("report") != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s/report: cannot create: %s\n", dir, strerror(errno));
+        fprintf(stderr, "duel_evolve: experiment: %s/report: cannot create: %s\n", duel_esc(dir), strerror(errno));
         rc = 1;
     }
     if (rc == 0) {
@@ -916,7 +917,7 @@ int duel_exp_report_here(const duel_plan *p, const char *dir)
         if (rc == 0)
             rc = rep_plot(dir);
         if (rc == 0)
-            fprintf(stderr, "experiment: the report is in %s/report (table1.md, figures *.png and *.svg)\n", dir);
+            fprintf(stderr, "experiment: the report is in %s/report (table1.md, figures *.png and *.svg)\n", duel_esc(dir));
     }
     for (i = 0; i < p->n_methods; i++)
         duel_perf_free(&R.m[i].perf);

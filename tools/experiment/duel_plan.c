@@ -626,14 +626,14 @@ int duel_plan_save(const duel_plan *p, const char *dir)
     /* Room for the longest file name below, so no snprintf here can truncate (a truncated path would
        write the wrong file); duel_exp passes ".", so this guards other callers. */
     if (strlen(dir) + sizeof "/configs/" + DUEL_PLAN_MAX_NAME + sizeof ".ini" > sizeof path) {
-        fprintf(stderr, "duel_evolve: experiment: %.64s...: a directory path longer than %zu bytes\n", dir,
+        fprintf(stderr, "duel_evolve: experiment: %.64s...: a directory path longer than %zu bytes\n", duel_esc(dir),
                 sizeof path - sizeof "/configs/" - DUEL_PLAN_MAX_NAME - sizeof ".ini");
         return -1;
     }
     text = duel_plan_text(p);
     snprintf(path, sizeof path, "%s/configs", dir);
     if (text == NULL || duel_mkdir(path) != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", path, text == NULL ? "out of memory" : strerror(errno));
+        fprintf(stderr, "duel_evolve: experiment: %s: %s\n", duel_esc(path), text == NULL ? "out of memory" : strerror(errno));
         free(text);
         return -1;
     }
@@ -654,14 +654,14 @@ int duel_plan_save(const duel_plan *p, const char *dir)
         w = cfg == NULL ? -1 : duel_file_replace(path, cfg, cfg_len);
         free(cfg);
         if (w != 0) {
-            fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", path, strerror(errno));
+            fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
             free(text);
             return -1;
         }
     }
     snprintf(path, sizeof path, "%s/plan.ini", dir);
     if (duel_file_replace(path, text, strlen(text)) != 0) {
-        fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", path, strerror(errno));
+        fprintf(stderr, "duel_evolve: experiment: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
         free(text);
         return -1;
     }

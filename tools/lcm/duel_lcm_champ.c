@@ -4,6 +4,7 @@
 #include "duel_lcm.h"
 #include "duel_lcm_champ.h"
 #include "neat_phenotype.h"
+#include "duel_text.h"
 
 int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_t champion_pop,
                                    const neat_genome *champion, const neat_genome *other, const neat_params *p,
@@ -37,7 +38,7 @@ int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_
         snprintf(path, sizeof path, "%s/games/gen-%05u-%s.lcm", dir, (unsigned)generation, side ? "east" : "west");
         if (duel_lcm_record_game(path, rules, &c[0], &c[1], DUEL_TRAINING, name[w], name[east], &res, err,
                                  sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: %s\n", err);
+            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
             rc = -1;
         }
     }

@@ -2,12 +2,13 @@
 #include <stdio.h>
 
 #include "duel_lcm_champ.h"
+#include "duel_text.h"
 
 int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_t champion_pop,
                                    const neat_genome *champion, const neat_genome *other, const neat_params *p,
                                    const duel_rules *rules)
 {
     (void)generation, (void)champion_pop, (void)champion, (void)other, (void)p, (void)rules;
-    fprintf(stderr, "duel_evolve: %s: --record-champion-games needs a build with LCM (duel_evolve itself)\n", dir);
+    fprintf(stderr, "duel_evolve: %s: --record-champion-games needs a build with LCM (duel_evolve itself)\n", duel_esc(dir));
     return -1;
 }
