@@ -336,6 +336,14 @@ edits)
     config --config "$tmp/o1.ini" --dump
   printf '[overrides]\nfrom 2 = pop_size=40\n' > "$tmp/o2.ini"
   expect_bad "\[overrides\] from 2: pop_size cannot change during a run" run --config "$cfg" --config "$tmp/o2.ini" --out "$tmp/never"
+  # nor can the network step: the run's champions, dominants and strength rows are blobs of one step
+  printf '[overrides]\nfrom 2 = net_step=propagate\n' > "$tmp/o3.ini"
+  expect_bad "\[overrides\] from 2: net_step cannot change during a run" run --config "$cfg" --config "$tmp/o3.ini" --out "$tmp/never"
+  cp -r "$tmp/ref" "$tmp/ns"
+  before=$(snapshot "$tmp/ns")
+  expect_bad "--set net_step: a run's network step cannot change; start a new run instead" \
+    resume "$tmp/ns" --generations 6 --set net_step=propagate
+  [ "$(snapshot "$tmp/ns")" = "$before" ] || fail "a refused net_step override changed the run"
   # a run directory from before the seal resumes as before
   cp -r "$tmp/ref" "$tmp/old"
   sed -i 2,3d "$tmp/old/config.ini"

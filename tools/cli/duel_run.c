@@ -2076,6 +2076,13 @@ static int duel_resume_main(int argc, char **argv)
             fprintf(stderr, "duel_evolve: the overrides do not fit this run (pop_size cannot change)\n");
             return 2;
         }
+        if (scratch.neat.net_step != R.cfg.neat.net_step) {
+            /* its champions, dominants and strength rows are blobs of that step, checked against the checkpoint
+             * in it */
+            fprintf(stderr, "duel_evolve: --set net_step: a run's network step cannot change; start a new run "
+                            "instead\n");
+            return 2;
+        }
     }
 
     /* a hand edit of any key is refused: the NEAT and coevolution keys are named below (against the checkpoint),

@@ -582,6 +582,11 @@ int duel_config_check(const duel_config *cfg, char *err, size_t err_len)
                 snprintf(err, err_len, "[overrides] from %u: pop_size cannot change during a run", cfg->over[k].from);
                 return -1;
             }
+            if (at.neat.net_step != cfg->neat.net_step) {
+                /* a run's champions, dominants and strength rows are blobs of one step */
+                snprintf(err, err_len, "[overrides] from %u: net_step cannot change during a run", cfg->over[k].from);
+                return -1;
+            }
         }
     }
     return duel_world_check(&cfg->world, err, err_len);
