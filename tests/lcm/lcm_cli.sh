@@ -105,7 +105,7 @@ bad-input)
   expect_bad "format version 99" log dump "$tmp/v99.lcm" --channel DUEL_NET
   # the first state message (its channel name, then fingerprint and version)
   cp "$tmp/g.lcm" "$tmp/v99s.lcm"
-  at=$(grep -abo DUEL_STATE "$tmp/g.lcm" | head -1 | cut -d: -f1)
+  at=$(grep -abo DUEL_STATE "$tmp/g.lcm" | sed -n "1s/:.*//p") # (sed reads it all: head would end grep by SIGPIPE)
   printf '\x63' | dd of="$tmp/v99s.lcm" bs=1 seek=$((at + 10 + 8 + 3)) conv=notrunc status=none
   expect_bad "v99s.lcm: event 2 at offset [0-9]*: DUEL_STATE: duel.state_t format version 99, this reader knows only version 1" \
     log dump "$tmp/v99s.lcm"
