@@ -455,6 +455,11 @@ NEAT_API int neat_pop_save(const neat_pop *pop, uint8_t **buf, size_t *len); /* 
 NEAT_API void neat_pop_buf_free(const neat_pop *pop, uint8_t *buf, size_t len);
 /* On NEAT_E_FORMAT/CRC/TRUNCATED, *err_offset (if not NULL) is the byte offset of the problem. */
 NEAT_API int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_alloc *alloc, size_t *err_offset);
+/* What a checkpoint's first 8 bytes say it is, and nothing more (a load checks the rest): a population's
+ * (neat_pop_save), a coevolution's (neat_coev_save, neat_coev.h), or neither. Callers that accept one kind name
+ * the other for what it is instead of "malformed". */
+enum neat_checkpoint_kind { NEAT_CKPT_NONE = 0, NEAT_CKPT_POP = 1, NEAT_CKPT_COEV = 2 };
+NEAT_API int neat_checkpoint_kind(const uint8_t *buf, size_t len);
 
 /* The game-identity tag: opaque bytes naming what the run was made with
  * (e.g. the world rules of a game, which libneat does not know), kept in

@@ -373,3 +373,12 @@ int neat_pop_load(neat_pop **out, const uint8_t *buf, size_t len, const neat_all
     *out = pop;
     return NEAT_OK;
 }
+
+int neat_checkpoint_kind(const uint8_t *buf, size_t len)
+{
+    if (buf == NULL || len < 8)
+        return NEAT_CKPT_NONE;
+    if (memcmp(buf, neat_ckpt_magic, 8) == 0)
+        return NEAT_CKPT_POP;
+    return memcmp(buf, neat_coev_magic, 8) == 0 ? NEAT_CKPT_COEV : NEAT_CKPT_NONE;
+}

@@ -692,7 +692,7 @@ const uint8_t *neat_coev_game(const neat_coev *c, size_t *len)
 
 /* ---- checkpoint ---- */
 
-static const uint8_t neat_coev_magic[8] = {'N', 'E', 'A', 'T', 'C', 'O', 'E', 'V'};
+const uint8_t neat_coev_magic[8] = {'N', 'E', 'A', 'T', 'C', 'O', 'E', 'V'};
 
 static void neat_put_glist(neat_wbuf *w, const neat_glist *l)
 {

@@ -39,6 +39,8 @@ double neat_get_f64(neat_rbuf *r);
  * a version from oldest to newest (returned; 0 on failure), then the CRC-32
  * in the last 4 bytes; the body then ends before the checksum. */
 uint32_t neat_get_frame(neat_rbuf *r, const uint8_t magic[8], uint32_t oldest, uint32_t newest);
+/* a coevolution checkpoint's magic (neat_coev.c), for neat_checkpoint_kind */
+extern const uint8_t neat_coev_magic[8];
 /* a count of records of rec_size bytes that must fit in what is left */
 uint32_t neat_get_count(neat_rbuf *r, size_t rec_size);
 

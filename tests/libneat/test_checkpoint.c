@@ -210,6 +210,11 @@ static void test_header_layout(void **state)
     (void)state;
     save(pop, &buf, &len);
     assert_memory_equal(buf, "NEATCKPT", 8);
+    /* known by its magic, and only by a whole one */
+    assert_int_equal(neat_checkpoint_kind(buf, len), NEAT_CKPT_POP);
+    assert_int_equal(neat_checkpoint_kind(buf, 7), NEAT_CKPT_NONE);
+    assert_int_equal(neat_checkpoint_kind(NULL, 8), NEAT_CKPT_NONE);
+    assert_int_equal(neat_checkpoint_kind(buf + 1, len - 1), NEAT_CKPT_NONE);
     /* the default rules' checkpoints keep version 3's bytes; NEAT C++'s switches need version 4 */
     assert_int_equal(buf[8] | buf[9] << 8 | buf[10] << 16 | (uint32_t)buf[11] << 24,
                      ckpt_profile == NEAT_PROFILE_DEFAULT ? 3 : NEAT_CHECKPOINT_VERSION);

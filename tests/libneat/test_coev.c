@@ -385,6 +385,7 @@ static void save(const neat_coev *c, uint8_t **buf, size_t *len)
 {
     assert_int_equal(neat_coev_save(c, buf, len), NEAT_OK);
     assert_true(*len > 16);
+    assert_int_equal(neat_checkpoint_kind(*buf, *len), NEAT_CKPT_COEV); /* known by its magic */
 }
 
 static void assert_saves_equal(const neat_coev *c1, const neat_coev *c2)

@@ -75,6 +75,11 @@ bad)
   expect_bad "an empty name" run --config "$tmp/fx.ini" --out "$tmp/b" --set "opponents.play=builtin:forager,"
   expect_bad "random_fitness is the coevolution's control" run --config "$tmp/fx.ini" --out "$tmp/b" --set random_fitness=1
   "$duel" run --config "$tmp/fx.ini" --out "$tmp/r" --generations 2 --quiet
+  # inspect knows its checkpoint by its magic (neat_checkpoint_kind), as a file as well as a directory
+  for x in "$tmp/r" "$tmp/r/checkpoint.bin"; do
+    "$duel" inspect "$x" | grep -q "^population checkpoint (a run against fixed opponents), format" ||
+      fail "inspect $x: $("$duel" inspect "$x" 2>&1 | head -2)"
+  done
   expect_bad "a run's \[opponents\] cannot change" resume "$tmp/r" --set fitness=wins
   sed -i 's/^fitness = wins-losses$/fitness = wins/' "$tmp/r/config.ini"
   expect_bad "other games than config.ini" resume "$tmp/r" --generations 3

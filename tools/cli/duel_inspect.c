@@ -292,13 +292,22 @@ static int duel_starts_with(const char *path, const char magic[8])
     return yes;
 }
 
-/* A run directory, or a file that starts like a coevolution checkpoint. */
+/* A run directory, or a file that starts like a checkpoint (a coevolution's, or a population's: a run against
+ * fixed opponents). */
 static int duel_is_checkpoint(const char *path)
 {
     struct stat st;
+    uint8_t head[8];
+    FILE *f;
+    int kind = NEAT_CKPT_NONE;
     if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
         return 1;
-    return duel_starts_with(path, "NEATCOEV");
+    if ((f = duel_fopen_regular(path)) == NULL)
+        return 0;
+    if (fread(head, 1, 8, f) == 8)
+        kind = neat_checkpoint_kind(head, 8);
+    fclose(f);
+    return kind != NEAT_CKPT_NONE;
 }
 
 /* A genome file's own content, before its network's: the shape, every

@@ -104,7 +104,7 @@ int duel_inspect_run(const char *arg)
         uint8_t *buf = NULL;
         size_t len = 0;
         if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) == 0) {
-            if (len >= 8 && memcmp(buf, "NEATCKPT", 8) == 0) {
+            if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_POP) {
                 e = duel_inspect_pop_ckpt(path, buf, len);
                 free(buf);
                 return e;

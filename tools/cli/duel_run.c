@@ -1582,7 +1582,7 @@ static int duel_pop_ckpt_load(const char *path, neat_pop **out)
         fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
-    if (len >= 8 && memcmp(buf, "NEATCOEV", 8) == 0) {
+    if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_COEV) {
         fprintf(stderr, "duel_evolve: %s: a coevolution's checkpoint, but config.ini names [opponents]: restore the "
                         "run's config.ini\n", duel_esc(path));
         free(buf);

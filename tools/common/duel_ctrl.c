@@ -268,13 +268,14 @@ void duel_fixed_run_refused(const char *prefix, const char *path)
 
 int duel_run_is_fixed(const char *dir)
 {
-    char path[4200], head[8];
+    char path[4200];
+    uint8_t head[8];
     FILE *f;
     int yes;
     if ((size_t)snprintf(path, sizeof path, "%s/checkpoint.bin", dir) >= sizeof path ||
         (f = duel_fopen_regular(path)) == NULL)
         return 0;
-    yes = fread(head, 1, 8, f) == 8 && memcmp(head, "NEATCKPT", 8) == 0;
+    yes = fread(head, 1, 8, f) == 8 && neat_checkpoint_kind(head, 8) == NEAT_CKPT_POP;
     fclose(f);
     return yes;
 }
@@ -293,13 +294,13 @@ int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
                 errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
-    if (len >= 8 && memcmp(buf, "NEATCKPT", 8) == 0) {
+    if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_POP) {
         duel_fixed_run_refused(prefix, path);
         free(buf);
         return -1;
     }
     err = neat_coev_load(out, buf, len, NULL, &off);
-    if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && memcmp(buf, "NEATCOEV", 8) == 0) {
+    if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && neat_checkpoint_kind(buf, len) == NEAT_CKPT_COEV) {
         v = (uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24;
         fprintf(stderr, "duel_evolve: %s%s: offset 8: checkpoint format %lu, but this duel_evolve reads format %d "
                         "(docs/formats.md)\n", prefix, duel_esc(path), (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
@@ -341,7 +342,7 @@ int duel_run_world(const char *dir, duel_rules *r)
     /* a run against fixed opponents checkpoints one population: its tag the same */
     if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0)
         buf = NULL;
-    if (buf != NULL && len >= 8 && memcmp(buf, "NEATCKPT", 8) == 0) {
+    if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_POP) {
         neat_pop *pop;
         size_t off = 0, tlen = 0;
         const uint8_t *tag;
