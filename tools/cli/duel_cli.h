@@ -13,18 +13,7 @@
  * (tools/neatcpp/neatcpp_duel.cpp). */
 int duel_evolve_main(int argc, char **argv);
 
-/* Another NEAT's reproduction for the coevolution runs this process starts whose [run] reproduction is
- * `which` (enum duel_reproduction; tools/neatcpp/neatcpp_duel.cpp: NEAT C++ 1.2.1's own): begin(ud, cfg)
- * when such a run starts (0, or -1 after one line on stderr), then reproduce as neat_coev_set_reproducer
- * calls it. Without one, such a run is refused; and such a run is never resumed, the other NEAT's
- * populations being in no file. */
-typedef struct duel_reproducer {
-    int which;
-    int (*begin)(void *ud, const duel_config *cfg);
-    neat_coev_reproduce_fn reproduce;
-    void *ud;
-} duel_reproducer;
-void duel_run_set_reproducer(const duel_reproducer *r);
+/* Another NEAT's reproduction for its runs: duel_engine_set_reproducer (tools/run/duel_engine.h). */
 
 /* What the `dot` picture leaves out: connections whose |weight| is below
  * min_weight (0: none left out). */

@@ -132,12 +132,14 @@ const char *duel_origin_step_text(const duel_origin *o)
     return duel_step_name(o->net_step);
 }
 
-/* duel_cli_read_blob_origin, the world of a file in a run looked up only when want_world */
-static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel_origin *origin, int want_world)
+/* duel_read_blob_msg, the world of a file in a run looked up only when want_world: the message in err (the
+ * path escaped already; a loader's message as it gave it: print it through duel_esc_msg) */
+static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel_origin *origin, int want_world,
+                             char *err, size_t cap)
 {
     duel_origin own;
     duel_origin *o = origin != NULL ? origin : &own;
-    char err[4400];
+    char esc[1100];
     int r = duel_file_read(path, DUEL_GENOME_MAX, blob, len);
     if (r == 0 && duel_is_genome_file(*blob, *len)) {
         /* a genome file: its network's blob, as evolution would encode it, in the step it was evolved with */
@@ -145,17 +147,17 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
         uint32_t ni, no;
         uint8_t *file = *blob;
         *blob = NULL;
-        r = duel_origin_of_bytes(path, file, *len, o, &g, &ni, &no, want_world, err, sizeof err);
+        r = duel_origin_of_bytes(path, file, *len, o, &g, &ni, &no, want_world, err, cap);
         free(file);
         if (r != 0) {
-            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
             *len = 0;
             return -1;
         }
         r = duel_genome_blob(&g, ni, no, o->net_step, blob, len);
         neat_genome_free(&g, NULL);
         if (r != 0) {
-            fprintf(stderr, "duel_evolve: %s: the genome has no blob: %s\n", duel_esc(path), neat_strerror(r));
+            snprintf(err, cap, "%s: the genome has no blob: %s", duel_text_escape(path, esc, sizeof esc),
+                     neat_strerror(r));
             return -1;
         }
         return 0;
@@ -166,9 +168,8 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
         errno = EFBIG;
     }
     if (r == 0) {
-        if (duel_origin_of_bytes(path, *blob, *len, o, NULL, NULL, NULL, want_world, err, sizeof err) == 0)
+        if (duel_origin_of_bytes(path, *blob, *len, o, NULL, NULL, NULL, want_world, err, cap) == 0)
             return 0;
-        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
         free(*blob);
         *blob = NULL;
         *len = 0;
@@ -176,24 +177,39 @@ static int duel_read_blob_in(const char *path, uint8_t **blob, size_t *len, duel
     }
     *blob = NULL;
     *len = 0;
+    duel_text_escape(path, esc, sizeof esc);
     if (r == -1)
-        fprintf(stderr, "duel_evolve: %s: cannot open: %s\n", duel_esc(path), strerror(errno));
+        snprintf(err, cap, "%s: cannot open: %s", esc, strerror(errno));
     else if (errno == EFBIG)
-        fprintf(stderr, "duel_evolve: %s: larger than any champion blob (%lu bytes at most)\n", duel_esc(path),
-                (unsigned long)DUEL_BLOB_MAX);
+        snprintf(err, cap, "%s: larger than any champion blob (%lu bytes at most)", esc, (unsigned long)DUEL_BLOB_MAX);
     else
-        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), strerror(errno));
+        snprintf(err, cap, "%s: cannot read: %s", esc, strerror(errno));
+    return -1;
+}
+
+int duel_read_blob_msg(const char *path, uint8_t **blob, size_t *len, duel_origin *origin, char *err, size_t cap)
+{
+    return duel_read_blob_in(path, blob, len, origin, origin != NULL, err, cap);
+}
+
+/* The commands' reading: the message printed. */
+static int duel_read_blob_print(const char *path, uint8_t **blob, size_t *len, duel_origin *origin, int want_world)
+{
+    char err[4600];
+    if (duel_read_blob_in(path, blob, len, origin, want_world, err, sizeof err) == 0)
+        return 0;
+    fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
     return -1;
 }
 
 int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, duel_origin *origin)
 {
-    return duel_read_blob_in(path, blob, len, origin, origin != NULL);
+    return duel_read_blob_print(path, blob, len, origin, origin != NULL);
 }
 
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len)
 {
-    return duel_read_blob_in(path, blob, len, NULL, 0);
+    return duel_read_blob_print(path, blob, len, NULL, 0);
 }
 
 static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world);
@@ -226,7 +242,7 @@ static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world)
         c->origin.builtin = 1;
         return 0;
     }
-    if (duel_read_blob_in(spec, &c->blob, &size, &c->origin, want_world) != 0)
+    if (duel_read_blob_print(spec, &c->blob, &size, &c->origin, want_world) != 0)
         return -1;
     c->blob_len = size;
     err = nrt_mem_required(c->blob, size, &need);
@@ -259,11 +275,19 @@ void duel_cli_ctrl_close(duel_cli_ctrl *c)
     c->ctrl.net = NULL;
 }
 
+void duel_fixed_run_refused_msg(const char *prefix, const char *path, char *msg, size_t cap)
+{
+    char esc[1100];
+    snprintf(msg, cap, "%s%s: the checkpoint of a run against fixed opponents (one population, no dominance "
+                       "tournament): compare, ladder and experiment measure coevolution runs; play its champions "
+                       "instead (champions/gen-G.blob)", prefix, duel_text_escape(path, esc, sizeof esc));
+}
+
 void duel_fixed_run_refused(const char *prefix, const char *path)
 {
-    fprintf(stderr, "duel_evolve: %s%s: the checkpoint of a run against fixed opponents (one population, no dominance "
-                    "tournament): compare, ladder and experiment measure coevolution runs; play its champions "
-                    "instead (champions/gen-G.blob)\n", prefix, duel_esc(path));
+    char msg[1600];
+    duel_fixed_run_refused_msg(prefix, path, msg, sizeof msg);
+    fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
 }
 
 int duel_run_is_fixed(const char *dir)
@@ -280,35 +304,47 @@ int duel_run_is_fixed(const char *dir)
     return yes;
 }
 
-int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
+int duel_ckpt_load_msg(const char *prefix, const char *path, neat_coev **out, char *msg, size_t cap)
 {
     uint8_t *buf;
     size_t len, off = 0;
     uint32_t v;
+    char esc[1100];
     int err;
     *out = NULL;
+    msg[0] = '\0';
+    duel_text_escape(path, esc, sizeof esc);
     if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
         if (errno == ENOENT)
             return 1;
-        fprintf(stderr, "duel_evolve: %s%s: cannot read: %s\n", prefix, duel_esc(path),
-                errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
+        snprintf(msg, cap, "%s%s: cannot read: %s", prefix, esc,
+                 errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
     if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_POP) {
-        duel_fixed_run_refused(prefix, path);
+        duel_fixed_run_refused_msg(prefix, path, msg, cap);
         free(buf);
         return -1;
     }
     err = neat_coev_load(out, buf, len, NULL, &off);
     if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && neat_checkpoint_kind(buf, len) == NEAT_CKPT_COEV) {
         v = (uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24;
-        fprintf(stderr, "duel_evolve: %s%s: offset 8: checkpoint format %lu, but this duel_evolve reads format %d "
-                        "(docs/formats.md)\n", prefix, duel_esc(path), (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
+        snprintf(msg, cap, "%s%s: offset 8: checkpoint format %lu, but this duel_evolve reads format %d "
+                           "(docs/formats.md)", prefix, esc, (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
     } else if (err) {
-        fprintf(stderr, "duel_evolve: %s%s: offset %zu: %s\n", prefix, duel_esc(path), off, neat_strerror(err));
+        snprintf(msg, cap, "%s%s: offset %zu: %s", prefix, esc, off, neat_strerror(err));
     }
     free(buf);
     return err ? -1 : 0;
+}
+
+int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
+{
+    char msg[4600];
+    int r = duel_ckpt_load_msg(prefix, path, out, msg, sizeof msg);
+    if (r < 0)
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return r;
 }
 
 int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r)

@@ -61,6 +61,9 @@ int duel_ctrl_world(const char *const *specs, int n, duel_rules *r, int *found);
 int duel_cli_read_blob(const char *path, uint8_t **blob, size_t *len);
 /* The same, with the file's origin in *origin (NULL: not wanted). */
 int duel_cli_read_blob_origin(const char *path, uint8_t **blob, size_t *len, duel_origin *origin);
+/* The same, printing nothing (for the run engine, which may run in a thread): -1 with the line in err, without
+ * "duel_evolve: " (paths escaped already; give it through duel_esc_msg or duel_text_escape_msg). */
+int duel_read_blob_msg(const char *path, uint8_t **blob, size_t *len, duel_origin *origin, char *err, size_t cap);
 
 /* Loads spec into c; on error prints one line naming the problem to stderr
  * and returns -1. */
@@ -79,10 +82,13 @@ struct neat_coev;
  * refused at an offset (naming both format versions when it is a format
  * this build does not read). */
 int duel_ckpt_load(const char *prefix, const char *path, struct neat_coev **out);
+/* The same, printing nothing: -1 with the line in msg (as duel_read_blob_msg's). */
+int duel_ckpt_load_msg(const char *prefix, const char *path, struct neat_coev **out, char *msg, size_t cap);
 /* 1 when dir's checkpoint.bin is a run's against fixed opponents (a population's, "NEATCKPT"). */
 int duel_run_is_fixed(const char *dir);
 /* The one line that refuses such a run's checkpoint (at path) where a coevolution's is needed. */
 void duel_fixed_run_refused(const char *prefix, const char *path);
+void duel_fixed_run_refused_msg(const char *prefix, const char *path, char *msg, size_t cap);
 void duel_cli_ctrl_close(duel_cli_ctrl *c);
 
 /* The world a coevolution checkpoint (read from path) was made in: its game

@@ -53,20 +53,32 @@ int duel_is_genome_file(const uint8_t *buf, size_t len)
     return len >= 8 && memcmp(buf, NEAT_GENOME_FILE_MAGIC, 8) == 0;
 }
 
-int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
-                      const neat_genome_origin *origin)
+int duel_genome_write_msg(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
+                          const neat_genome_origin *origin, char *msg, size_t cap)
 {
     uint8_t *buf = NULL;
     size_t len = 0;
+    char esc[1100];
     int err = neat_genome_save_origin(g, n_inputs, n_outputs, origin, &buf, &len, NULL), r;
     if (err) {
-        fprintf(stderr, "duel_evolve: %s: cannot encode the genome: %s\n", duel_esc(path), neat_strerror(err));
+        snprintf(msg, cap, "%s: cannot encode the genome: %s", duel_text_escape(path, esc, sizeof esc),
+                 neat_strerror(err));
         return -1;
     }
     r = duel_file_replace(path, buf, len);
     if (r != 0)
-        fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
+        snprintf(msg, cap, "%s: cannot write: %s", duel_text_escape(path, esc, sizeof esc), strerror(errno));
     free(buf);
+    return r;
+}
+
+int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
+                      const neat_genome_origin *origin)
+{
+    char msg[1400];
+    int r = duel_genome_write_msg(path, g, n_inputs, n_outputs, origin, msg, sizeof msg);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
     return r;
 }
 

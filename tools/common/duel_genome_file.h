@@ -32,6 +32,9 @@ int duel_genome_parse_origin(const char *path, const uint8_t *buf, size_t len, n
  * that says nothing); on error prints one line and returns -1. */
 int duel_genome_write(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
                       const neat_genome_origin *origin);
+/* The same, printing nothing: -1 with the line in msg (the path escaped already). */
+int duel_genome_write_msg(const char *path, const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs,
+                          const neat_genome_origin *origin, char *msg, size_t cap);
 /* g's network as a blob in step mode net_step (neat_blob_write_step), in a malloc'd *blob of *len bytes (the caller
  * frees it). NEAT_OK, or a NEAT_E_ code (*blob NULL). */
 int duel_genome_blob(const neat_genome *g, uint32_t n_inputs, uint32_t n_outputs, int net_step, uint8_t **blob,

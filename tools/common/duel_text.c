@@ -51,6 +51,11 @@ void duel_csv_field(FILE *f, const char *s)
     fputc('"', f);
 }
 
+const char *duel_text_escape_msg(const char *s, char *buf, size_t cap)
+{
+    return duel_text_escape_as(s, buf, cap, 0);
+}
+
 const char *duel_esc(const char *s)
 {
     static char buf[DUEL_ESC_SLOTS][1024];

@@ -7,6 +7,8 @@
 
 /* s with every byte below 0x20 and 0x7f written as \xNN (and '\' as "\\"), cut to fit buf (cap >= 1). buf. */
 const char *duel_text_escape(const char *s, char *buf, size_t cap);
+/* The same with backslashes kept (a whole message whose values are escaped already: duel_esc_msg's way). buf. */
+const char *duel_text_escape_msg(const char *s, char *buf, size_t cap);
 
 /* duel_text_escape into one of DUEL_ESC_SLOTS buffers used in turn (of 1024 bytes): for the values echoed in one
  * message, at most that many in one call; the main thread's messages only. */

@@ -8,7 +8,7 @@
 
 int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_t champion_pop,
                                    const neat_genome *champion, const neat_genome *other, const neat_params *p,
-                                   const duel_rules *rules)
+                                   const duel_rules *rules, char *msg, size_t cap)
 {
     neat_phenotype ph[2];
     duel_controller c[2];
@@ -24,8 +24,7 @@ int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_
     if (!e)
         e = neat_phenotype_load(&ph[1], other, p);
     if (e) {
-        fprintf(stderr, "duel_evolve: generation %u: cannot load the champion's game networks (%d)\n",
-                (unsigned)generation, e);
+        snprintf(msg, cap, "generation %u: cannot load the champion's game networks (%d)", (unsigned)generation, e);
         rc = -1;
     }
     for (side = 0; side < 2 && rc == 0; side++) {
@@ -38,7 +37,7 @@ int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_
         snprintf(path, sizeof path, "%s/games/gen-%05u-%s.lcm", dir, (unsigned)generation, side ? "east" : "west");
         if (duel_lcm_record_game(path, rules, &c[0], &c[1], DUEL_TRAINING, name[w], name[east], &res, err,
                                  sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
+            snprintf(msg, cap, "%s", err);
             rc = -1;
         }
     }

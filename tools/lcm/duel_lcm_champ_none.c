@@ -6,9 +6,11 @@
 
 int duel_lcm_record_champion_games(const char *dir, uint32_t generation, uint32_t champion_pop,
                                    const neat_genome *champion, const neat_genome *other, const neat_params *p,
-                                   const duel_rules *rules)
+                                   const duel_rules *rules, char *msg, size_t cap)
 {
+    char esc[1100];
     (void)generation, (void)champion_pop, (void)champion, (void)other, (void)p, (void)rules;
-    fprintf(stderr, "duel_evolve: %s: --record-champion-games needs a build with LCM (duel_evolve itself)\n", duel_esc(dir));
+    snprintf(msg, cap, "%s: --record-champion-games needs a build with LCM (duel_evolve itself)",
+             duel_text_escape(dir, esc, sizeof esc));
     return -1;
 }

@@ -22,6 +22,7 @@
 #include "species.h"
 extern "C" {
 #include "duel_cli.h"
+#include "duel_engine.h"
 }
 #include "neatcpp_genome.h"
 #include "neatcpp_random.h"
@@ -216,6 +217,6 @@ int main(int argc, char **argv)
     r.begin = begin;
     r.reproduce = reproduce;
     r.ud = NULL;
-    duel_run_set_reproducer(&r);
+    duel_engine_set_reproducer(&r);
     return duel_evolve_main(argc, argv);
 }
