@@ -1,10 +1,11 @@
 # neat_install.cmake - cmake --install: the libraries and their public headers (include/neat_duel/), the CMake
-# package (find_package(neat_duel CONFIG) -> neat_duel::nrt, ::duelsim, ::neat), pkg-config files (nrt.pc,
-# duelsim.pc, neat.pc), LICENSE, and duel_evolve and neat_bench when they are built. docs/library.md.
+# package (find_package(neat_duel CONFIG) -> neat_duel::nrt, ::duelsim, ::neat, ::duelengine), pkg-config files
+# (nrt.pc, duelsim.pc, neat.pc, duelengine.pc), LICENSE, and duel_evolve and neat_bench when they are built.
+# docs/library.md.
 include(CMakePackageConfigHelpers)
 
 set(NEAT_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/neat_duel)
-install(TARGETS nrt duelsim neat EXPORT neat_duelTargets
+install(TARGETS nrt duelsim neat duelengine EXPORT neat_duelTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
@@ -12,6 +13,7 @@ install(FILES ${PROJECT_SOURCE_DIR}/runtime/include/neat_duel_version.h ${PROJEC
               ${PROJECT_SOURCE_DIR}/runtime/include/nrt_dense.h ${PROJECT_SOURCE_DIR}/duelsim/include/duel.h
               ${PROJECT_SOURCE_DIR}/libneat/include/neat.h ${PROJECT_SOURCE_DIR}/libneat/include/neat_coev.h
               ${PROJECT_SOURCE_DIR}/libneat/include/neat_phenotype.h
+              ${PROJECT_SOURCE_DIR}/tools/run/duel_engine.h ${PROJECT_SOURCE_DIR}/tools/common/duel_config.h
         DESTINATION ${NEAT_INSTALL_INCLUDEDIR})
 install(EXPORT neat_duelTargets NAMESPACE neat_duel:: DESTINATION ${NEAT_CMAKE_DIR})
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/neat_duelConfig.cmake.in
@@ -39,7 +41,7 @@ set(PC_CFLAGS "")
 if(BUILD_SHARED_LIBS)
   set(PC_CFLAGS " -DNEAT_DUEL_SHARED") # the declarations' export attribute, as the libraries were built
 endif()
-foreach(PC_NAME nrt duelsim neat)
+foreach(PC_NAME nrt duelsim neat duelengine)
   if(PC_NAME STREQUAL "nrt")
     set(PC_DESC "neat-duel controller runtime: champion blobs stepped in fixed point, no malloc")
     set(PC_REQUIRES "")
@@ -48,6 +50,10 @@ foreach(PC_NAME nrt duelsim neat)
     set(PC_DESC "neat-duel robot duel world (spec v1), integer arithmetic")
     set(PC_REQUIRES "nrt = ${PROJECT_VERSION}")
     set(PC_LIBS_PRIVATE "")
+  elseif(PC_NAME STREQUAL "duelengine")
+    set(PC_DESC "neat-duel run engine: a duel coevolution in a run directory, generation by generation")
+    set(PC_REQUIRES "neat = ${PROJECT_VERSION}, duelsim = ${PROJECT_VERSION}, nrt = ${PROJECT_VERSION}")
+    set(PC_LIBS_PRIVATE "-pthread -lm")
   else()
     set(PC_DESC "NEAT and competitive coevolution (Stanley & Miikkulainen)")
     set(PC_REQUIRES "nrt = ${PROJECT_VERSION}")

@@ -16,11 +16,19 @@
 #include "nrt.h"
 #include "neat_coev.h"
 extern "C" {
+#include "duel_config.h"
 #include "neat_config.h"
 #include "neat_ini.h"
 }
 
 namespace nb = nanobind;
+
+// A duel_evolve run configuration ([run], [coevolution], [neat], [world], [opponents]), read and written by the
+// C code duel_evolve uses (DuelConfig, nd_duel.cpp).
+struct nd_duel_config {
+    duel_config cfg;
+    nd_duel_config() { duel_config_default(&cfg); }
+};
 
 // A C error on its way to Python: neat_duel.errors picks the class from the code (nd_errors.cpp).
 struct nd_error : std::exception {
@@ -182,3 +190,4 @@ nd_coev *nd_coev_wrap(neat_coev *c);
 void nd_bind_coev(nb::module_ &m);
 void nd_bind_duel(nb::module_ &m);
 void nd_bind_run(nb::module_ &m);
+void nd_bind_engine(nb::module_ &m);

@@ -19,13 +19,6 @@ extern "C" {
 #include "duel_runtag.h"
 }
 
-// A duel_evolve run configuration ([run], [coevolution], [neat], [world], [opponents]), read and written by the
-// C code duel_evolve uses.
-struct nd_duel_config {
-    duel_config cfg;
-    nd_duel_config() { duel_config_default(&cfg); }
-};
-
 // The duel as a game: its executor (threads), created for the parameters of the networks it plays.
 struct nd_duel {
     // one user of the executor at a time: two coevolutions in two threads sharing a Duel take turns

@@ -16,6 +16,7 @@ NB_MODULE(_core, m)
     nd_bind_coev(m);
     nd_bind_duel(m);
     nd_bind_run(m);
+    nd_bind_engine(m);
     m.def("seed_derive", [](uint64_t base, const std::vector<uint64_t> &keys) {
             return neat_seed_derive(base, keys.data(), keys.size());
         }, nb::arg("base"), nb::arg("keys"),

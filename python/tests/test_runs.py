@@ -84,26 +84,82 @@ def test_ladder_and_compare_are_the_commands(tmp_path: pathlib.Path) -> None:
         runs.compare([], [b.path])
 
 
-def test_one_command_at_a_time(tmp_path: pathlib.Path) -> None:
+def test_two_runs_in_two_threads(tmp_path: pathlib.Path) -> None:
+    """Two runs at once in one process (each its own directory, the interpreter lock released while they play),
+    each the same as alone; a second opener of a directory in use is refused by the engine's lock."""
     import threading
-    import time
 
     errors: list[BaseException] = []
-    long = tmp_path / "long"
 
-    def long_run() -> None:
+    def one(name: str, seed: int) -> None:
         try:
-            runs.run(SMALL, long, generations=60)
+            runs.run(SMALL, tmp_path / name, generations=8, seed=seed, threads=1)
         except BaseException as e:  # noqa: BLE001 - reported below
             errors.append(e)
 
-    t = threading.Thread(target=long_run)
-    t.start()
-    while t.is_alive() and not (long / "generations.csv").exists():  # the run holds the command from here on
-        time.sleep(0.001)
-    # a second command while the first runs is refused at once (StateError), not run over it
-    with pytest.raises(nd.StateError, match="another duel_evolve command runs in this process"):
-        runs.ladder(long)
-    assert t.is_alive()  # (60 generations take seconds: the refusal above was made during the run)
-    t.join()
-    assert not errors and runs.RunDir(long).checkpoint().generation == 60
+    threads = [threading.Thread(target=one, args=(n, s)) for n, s in (("x", 3), ("y", 4))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors
+    runs.run(SMALL, tmp_path / "x1", generations=8, seed=3, threads=1)
+    for f in ("checkpoint.bin", "dominance.csv"):
+        assert (tmp_path / "x" / f).read_bytes() == (tmp_path / "x1" / f).read_bytes()
+    with runs.Run.start(SMALL, tmp_path / "z", generations=4) as held:
+        with pytest.raises(runs.RunError, match="in use by another") as e:
+            runs.Run.resume(tmp_path / "z")
+        assert e.value.status == 2
+        assert held.generation == 0
+    with runs.Run.resume(tmp_path / "z") as again:  # given back by close
+        assert again.total == 4
+
+
+def test_generation_by_generation_with_reporters(tmp_path: pathlib.Path) -> None:
+    """A Run iterated a generation at a time, with a custom reporter, the statistics and the checkpointer, and
+    left early: the directory is a whole run at that generation, which resume (here or duel_evolve) continues."""
+
+    class Count(runs.Reporter):
+        def __init__(self) -> None:
+            self.started = self.ended = 0
+            self.seen: list[int] = []
+
+        def start(self, run: runs.Run) -> None:
+            self.started += 1
+
+        def generation(self, run: runs.Run, record: runs.Generation) -> None:
+            self.seen.append(record.generation)
+
+        def end(self, run: runs.Run) -> None:
+            self.ended += 1
+
+    count, stats = Count(), runs.StatisticsReporter()
+    ck = runs.Checkpointer(2, tmp_path / "ck-")
+    with runs.Run.start(SMALL, tmp_path / "a", generations=10, reporters=[count, stats, ck]) as run:
+        for g in run.generations():
+            assert g.rows[0]["generation"] == g.generation and [r["population"] for r in g.rows] == ["A", "B"]
+            if g.dominants >= 3 or g.generation == 6:
+                break
+        stopped_at = run.generation
+    assert count.started == 1 and count.ended == 1 and count.seen == list(range(stopped_at))
+    assert len(stats.rows()) == 2 * stopped_at and stats.rows()[0]["population"] == "A"
+    assert (tmp_path / "ck-2.bin").read_bytes()[:8] == (tmp_path / "a" / "checkpoint.bin").read_bytes()[:8]
+    assert runs.RunDir(tmp_path / "a").checkpoint().generation == stopped_at
+    # the rest from Python equals the whole run made at once
+    runs.resume(tmp_path / "a")
+    runs.run(SMALL, tmp_path / "b", generations=10)
+    for f in ("checkpoint.bin", "dominance.csv"):
+        assert (tmp_path / "a" / f).read_bytes() == (tmp_path / "b" / f).read_bytes()
+    # an exception in a reporter stops the run after the generation in flight, which is saved
+    class Boom(runs.Reporter):
+        def generation(self, run: runs.Run, record: runs.Generation) -> None:
+            if record.generation == 2:
+                raise RuntimeError("boom")
+
+    with pytest.raises(RuntimeError, match="boom"):
+        runs.run(SMALL, tmp_path / "c", generations=10, reporters=[Boom()])
+    assert runs.RunDir(tmp_path / "c").checkpoint().generation == 3
+    # play() with an early stop condition
+    with runs.Run.resume(tmp_path / "c") as run:
+        run.play(until=lambda g: g.generation >= 5)
+        assert run.generation == 6

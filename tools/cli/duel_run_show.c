@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include "duel.h"
+#include "duel_fixed.h"
+#include "duel_lcm_champ.h"
 #include "duel_mpi.h"
 #include "duel_run_show.h"
 #include "duel_signal.h"
@@ -241,6 +243,7 @@ static const duel_engine_executor duel_mpi_exec = {duel_mpi_games_ranks, duel_mp
 void duel_show_init(duel_show *S, duel_engine_options *o)
 {
     duel_engine_set_executor(&duel_mpi_exec);
+    duel_engine_set_game_recorder(duel_lcm_record_champion_games);
     memset(S, 0, sizeof *S);
     memset(o, 0, sizeof *o);
     o->hooks.ud = S;

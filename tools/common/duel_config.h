@@ -10,6 +10,15 @@
 #include "neat.h"
 #include "neat_coev.h"
 
+/* The run engine's library (libduelengine, docs/library.md) exports what this header and duel_engine.h declare. */
+#ifndef DUEL_RUN_API
+#define DUEL_RUN_API NEAT_DUEL_EXPORT
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* [neat] start: the topology both populations start from. */
 enum duel_start_kind {
     DUEL_START_MINIMAL = 0, /* "minimal": bias and inputs to outputs, 39 connections */
@@ -79,60 +88,64 @@ typedef struct duel_config {
 } duel_config;
 
 /* The paper's values (Appendix A, section 5): 500 generations, seed 1. */
-void duel_config_default(duel_config *cfg);
+DUEL_RUN_API void duel_config_default(duel_config *cfg);
 
 /* Loads path over cfg. On error: -1 and one line in err naming the file
  * and line ("FILE:LINE: unknown key 'x' (did you mean 'y'?)"); nothing of
  * cfg is to be used then. */
-int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_len);
+DUEL_RUN_API int duel_config_load(duel_config *cfg, const char *path, char *err, size_t err_len);
 /* The same without the final duel_config_check, for a file that --set
  * overrides will complete (a preset's start = blob placeholder). */
-int duel_config_read(duel_config *cfg, const char *path, char *err, size_t err_len);
+DUEL_RUN_API int duel_config_read(duel_config *cfg, const char *path, char *err, size_t err_len);
 /* The same from len bytes of text, named name in the messages. */
-int duel_config_load_text(duel_config *cfg, const char *name, const char *text, size_t len, char *err,
+DUEL_RUN_API int duel_config_load_text(duel_config *cfg, const char *name, const char *text, size_t len, char *err,
                           size_t err_len);
 
 /* One override, "key=value" or "section.key=value" (a bare key must name
  * one key of one section). -1 with a message in err. */
-int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t err_len);
+DUEL_RUN_API int duel_config_set(duel_config *cfg, const char *assignment, char *err, size_t err_len);
 /* Applies n overrides as duel_config_set does, in order, except that a [neat] profile among them
  * ("profile=NAME" or "neat.profile=NAME") comes first: a profile sets what the other keys refine, as
  * in an INI file (neat_ini.h). 0, or -1 with err and *bad (if not NULL) the index of the refused one. */
-int duel_config_set_list(duel_config *cfg, const char *const *sets, uint32_t n, uint32_t *bad, char *err,
+DUEL_RUN_API int duel_config_set_list(duel_config *cfg, const char *const *sets, uint32_t n, uint32_t *bad, char *err,
                          size_t err_len);
 
 /* cfg as played at generation g: every override from g or before applied, in order (out->n_over 0: the
  * schedule is cfg's). 0, or -1 with err (an override that does not apply). */
-int duel_config_at(const duel_config *cfg, uint32_t g, duel_config *out, char *err, size_t err_len);
+DUEL_RUN_API int duel_config_at(const duel_config *cfg, uint32_t g, duel_config *out, char *err, size_t err_len);
 /* Whether one --set assignment is a parameter a run takes from a generation on ([neat] but start, or
  * [coevolution]): those are what [overrides] records. */
-int duel_config_set_is_param(const char *assignment);
+DUEL_RUN_API int duel_config_set_is_param(const char *assignment);
 /* Adds sets (n of them, each a parameter assignment) to cfg's overrides from generation g: a new line, or
  * the end of g's line. 0, or -1 with err (too many or too long; a comma in a value). */
-int duel_config_add_override(duel_config *cfg, uint32_t g, const char *const *sets, uint32_t n, char *err,
+DUEL_RUN_API int duel_config_add_override(duel_config *cfg, uint32_t g, const char *const *sets, uint32_t n, char *err,
                              size_t err_len);
 
 /* Every key of every section, in a form duel_config_load reads back to the
  * same configuration. */
-void duel_config_dump(FILE *out, const duel_config *cfg);
+DUEL_RUN_API void duel_config_dump(FILE *out, const duel_config *cfg);
 
 /* The start topology's text, as the INI takes it, into buf. */
-void duel_start_text(const duel_start *st, char *buf, size_t cap);
+DUEL_RUN_API void duel_start_text(const duel_start *st, char *buf, size_t cap);
 
 /* The start topology as a genome for neat_coev_create (a blob is read and
  * checked here). 0, or -1 with a message in err naming the file. */
-int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t err_len);
+DUEL_RUN_API int duel_start_genome(const duel_config *cfg, neat_genome *g, char *err, size_t err_len);
 
 /* 1 when a and b have the same nodes and the same connections (endpoints,
  * innovation, enabled), whatever their weights. */
-int duel_same_topology(const neat_genome *a, const neat_genome *b);
+DUEL_RUN_API int duel_same_topology(const neat_genome *a, const neat_genome *b);
 
 /* The whole configuration is usable (ranges, the duel's 12 sensors and 3
  * outputs). -1 with a message in err. */
-int duel_config_check(const duel_config *cfg, char *err, size_t err_len);
+DUEL_RUN_API int duel_config_check(const duel_config *cfg, char *err, size_t err_len);
 
 /* The next item of a comma-separated list ([opponents] play) at *p, blanks around it trimmed: its start and length;
  * *p moves past it and its comma. 1 when a comma followed it, else 0 (the list is done once **p is '\0'). */
-int duel_list_next(const char **p, const char **item, size_t *len);
+DUEL_RUN_API int duel_list_next(const char **p, const char **item, size_t *len);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* DUEL_CONFIG_H */

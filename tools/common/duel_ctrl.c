@@ -88,8 +88,9 @@ static int duel_origin_of_bytes(const char *path, const uint8_t *buf, size_t len
         o->step_from = DUEL_ORIGIN_RUN;
     }
     if (in_run && want_world && o->world_from == DUEL_ORIGIN_NONE) {
-        if (duel_run_world(run, &o->world) != 0) {
-            snprintf(err, err_len, "%s: the world of its run %s cannot be read (above)", path, run);
+        char why[2000];
+        if (duel_run_world_msg(run, &o->world, why, sizeof why) != 0) {
+            snprintf(err, err_len, "%s: the world of its run cannot be read: %s", path, why);
             return -1;
         }
         o->world_from = DUEL_ORIGIN_RUN;
@@ -347,32 +348,42 @@ int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
     return r;
 }
 
-int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r)
+int duel_ckpt_world_msg(const struct neat_coev *c, const char *path, duel_rules *r, char *msg, size_t cap)
 {
     size_t len = 0, off = 0;
     const uint8_t *tag = neat_coev_game(c, &len);
+    char esc[1100];
     if (len == 0) {
         *r = *duel_rules_v1();
         return 0;
     }
     /* the rules' bytes come first; what follows is the run's own (docs/tools.md, "The run directory") */
     if (duel_rules_decode(r, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, &off) != DUEL_OK) {
-        fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are damaged at byte %zu of %zu\n", duel_esc(path),
-                off, len);
+        snprintf(msg, cap, "%s: its world's rules (the game tag) are damaged at byte %zu of %zu",
+                 duel_text_escape(path, esc, sizeof esc), off, len);
         return -1;
     }
     return 0;
 }
 
-int duel_run_world(const char *dir, duel_rules *r)
+int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r)
 {
-    char path[4200];
+    char msg[1400];
+    if (duel_ckpt_world_msg(c, path, r, msg, sizeof msg) == 0)
+        return 0;
+    fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return -1;
+}
+
+int duel_run_world_msg(const char *dir, duel_rules *r, char *msg, size_t cap)
+{
+    char path[4200], esc[1100];
     struct neat_coev *c;
     uint8_t *buf = NULL;
     size_t len = 0;
     int e;
     if ((size_t)snprintf(path, sizeof path, "%s/checkpoint.bin", dir) >= sizeof path) {
-        fprintf(stderr, "duel_evolve: %s: the path is too long\n", duel_esc(dir));
+        snprintf(msg, cap, "%s: the path is too long", duel_text_escape(dir, esc, sizeof esc));
         return -1;
     }
     /* a run against fixed opponents checkpoints one population: its tag the same */
@@ -385,24 +396,25 @@ int duel_run_world(const char *dir, duel_rules *r)
         e = neat_pop_load(&pop, buf, len, NULL, &off);
         free(buf);
         if (e) {
-            fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", duel_esc(path), off, neat_strerror(e));
+            snprintf(msg, cap, "%s: offset %zu: %s", duel_text_escape(path, esc, sizeof esc), off, neat_strerror(e));
             return -1;
         }
         tag = neat_pop_game(pop, &tlen);
         e = tlen >= DUEL_RULES_BYTES ? duel_rules_decode(r, tag, DUEL_RULES_BYTES, &off) : DUEL_E_RULES;
         neat_pop_free(pop);
         if (e != DUEL_OK) {
-            fprintf(stderr, "duel_evolve: %s: its world's rules (the game tag) are missing or damaged\n", duel_esc(path));
+            snprintf(msg, cap, "%s: its world's rules (the game tag) are missing or damaged",
+                     duel_text_escape(path, esc, sizeof esc));
             return -1;
         }
         return 0;
     }
     free(buf);
-    e = duel_ckpt_load("", path, &c);
+    e = duel_ckpt_load_msg("", path, &c, msg, cap);
     if (e < 0)
         return -1;
     if (e == 0) {
-        e = duel_ckpt_world(c, path, r);
+        e = duel_ckpt_world_msg(c, path, r, msg, cap);
         neat_coev_free(c);
         return e;
     }
@@ -411,7 +423,16 @@ int duel_run_world(const char *dir, duel_rules *r)
         *r = *duel_rules_v1();
         return 0;
     }
-    return duel_world_of_run(r, dir);
+    return duel_world_of_run_msg(r, dir, msg, cap);
+}
+
+int duel_run_world(const char *dir, duel_rules *r)
+{
+    char msg[4600];
+    if (duel_run_world_msg(dir, r, msg, sizeof msg) == 0)
+        return 0;
+    fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return -1;
 }
 
 int duel_ctrl_world(const char *const *specs, int n, duel_rules *r, int *found)

@@ -96,10 +96,13 @@ void duel_cli_ctrl_close(duel_cli_ctrl *c);
  * before the rules were data, checkpoint version 2). 0, or -1 after one
  * line on stderr. */
 int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r);
+int duel_ckpt_world_msg(const struct neat_coev *c, const char *path, duel_rules *r, char *msg, size_t cap);
 
 /* The world of the run in dir: its checkpoint's (duel_ckpt_world), else,
  * before its first checkpoint, its config.ini's [world], else v1. 0, or -1
  * after one line on stderr (a damaged checkpoint or config.ini). */
 int duel_run_world(const char *dir, duel_rules *r);
+/* The same two, printing nothing: -1 with the line in msg (as duel_read_blob_msg's). */
+int duel_run_world_msg(const char *dir, duel_rules *r, char *msg, size_t cap);
 
 #endif /* DUEL_CTRL_H */

@@ -301,24 +301,34 @@ static int duel_world_ini(void *user, const char *section, const char *key, cons
     return duel_world_set(f->r, key, value, err, err_len);
 }
 
-/* the [world] of path over v1; *seen whether it had one */
-static int duel_world_read(duel_rules *r, const char *path, int *seen)
+/* the [world] of path over v1; *seen whether it had one. 0, or -1 with the line in msg (printed through
+ * duel_esc_msg) */
+static int duel_world_read_msg(duel_rules *r, const char *path, int *seen, char *out, size_t cap)
 {
-    char err[600], msg[400];
+    char err[600], msg[400], esc[1100];
     duel_world_file f;
     *r = *duel_rules_v1();
     f.r = r;
     f.seen = 0;
     if (neat_ini_parse_file(path, duel_world_ini, &f, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
+        snprintf(out, cap, "%s", err);
         return -1;
     }
     if (duel_world_check(r, msg, sizeof msg) != 0) {
-        fprintf(stderr, "duel_evolve: %s: %s\n", duel_esc(path), duel_esc_msg(msg));
+        snprintf(out, cap, "%s: %s", duel_text_escape(path, esc, sizeof esc), msg);
         return -1;
     }
     *seen = f.seen;
     return 0;
+}
+
+static int duel_world_read(duel_rules *r, const char *path, int *seen)
+{
+    char msg[1700];
+    if (duel_world_read_msg(r, path, seen, msg, sizeof msg) == 0)
+        return 0;
+    fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return -1;
 }
 
 int duel_world_arg(duel_rules *r, const char *spec)
@@ -342,13 +352,22 @@ int duel_world_arg(duel_rules *r, const char *spec)
     return 0;
 }
 
-int duel_world_of_run(duel_rules *r, const char *run_dir)
+int duel_world_of_run_msg(duel_rules *r, const char *run_dir, char *msg, size_t cap)
 {
-    char path[4200];
+    char path[4200], esc[1100];
     int seen;
     if ((size_t)snprintf(path, sizeof path, "%s/config.ini", run_dir) >= sizeof path) {
-        fprintf(stderr, "duel_evolve: %s: the path is too long\n", duel_esc(run_dir));
+        snprintf(msg, cap, "%s: the path is too long", duel_text_escape(run_dir, esc, sizeof esc));
         return -1;
     }
-    return duel_world_read(r, path, &seen);
+    return duel_world_read_msg(r, path, &seen, msg, cap);
+}
+
+int duel_world_of_run(duel_rules *r, const char *run_dir)
+{
+    char msg[1700];
+    if (duel_world_of_run_msg(r, run_dir, msg, sizeof msg) == 0)
+        return 0;
+    fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return -1;
 }

@@ -56,5 +56,7 @@ int duel_world_arg(duel_rules *r, const char *spec);
  * the file has none: runs made before the rules were data). 0; -1 after one
  * line on stderr. */
 int duel_world_of_run(duel_rules *r, const char *run_dir);
+/* The same, printing nothing: -1 with the line in msg (paths escaped; print it through duel_esc_msg). */
+int duel_world_of_run_msg(duel_rules *r, const char *run_dir, char *msg, size_t cap);
 
 #endif /* DUEL_WORLD_CFG_H */

@@ -10,8 +10,12 @@
 #include <stdint.h>
 
 #include "duel_config.h"
-#include "duel_fixed.h"
+#include "neat.h"
 #include "neat_coev.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* The statuses every function below returns: duel_evolve's exit statuses. */
 enum {
@@ -26,6 +30,8 @@ enum {
  * --quiet ("resuming DIR at generation G of N"). */
 typedef enum { DUEL_SAY_ERROR = 0, DUEL_SAY_NOTE = 1, DUEL_SAY_INFO = 2 } duel_say_kind;
 
+struct duel_fixed_report; /* duel_fixed.h: a generation of a run against fixed opponents */
+
 /* A generation played and recorded (every file of it written and the checkpoint saved). The rows are the bytes
  * appended to the run's files, each ending in its newline; valid during the hook only. */
 typedef struct duel_engine_record {
@@ -33,7 +39,7 @@ typedef struct duel_engine_record {
     uint32_t generations;           /* the run's total */
     double seconds;                 /* its wall time, games and records */
     const neat_coev_report *coev;   /* a coevolution's report, or NULL */
-    const duel_fixed_report *fixed; /* a run against fixed opponents': its report, or NULL */
+    const struct duel_fixed_report *fixed; /* a run against fixed opponents': its report, or NULL */
     const char *generations_rows;   /* generations.csv: two rows (A, B) for a coevolution, one otherwise */
     const char *dominance_row;      /* dominance.csv: the new dominant's row, or NULL */
     const char *strength_row;       /* strength.csv: the champion's games against the builtins, or NULL */
@@ -69,37 +75,37 @@ typedef struct duel_engine duel_engine;
 
 /* A new run of cfg (checked: duel_config_check) in dir: the directory created or taken (empty, or a run's files
  * that a run died before checkpointing), locked for the engine's life, config.ini written. */
-int duel_engine_new(duel_engine **out, const duel_config *cfg, const char *dir, const duel_engine_options *o);
+DUEL_RUN_API int duel_engine_new(duel_engine **out, const duel_config *cfg, const char *dir, const duel_engine_options *o);
 /* The run in dir, to go on from its checkpoint: config.ini, the checkpoint and the records checked against
  * each other, lost records rebuilt, o's overrides and new total applied and written into config.ini. */
-int duel_engine_resume(duel_engine **out, const char *dir, const duel_engine_options *o);
+DUEL_RUN_API int duel_engine_resume(duel_engine **out, const char *dir, const duel_engine_options *o);
 
 /* Plays n generations (0: up to the run's total), or fewer at the run's end or a stop. DUEL_ENGINE_OK,
  * DUEL_ENGINE_STOPPED (what was played is saved: a resume goes on from it), or an error. */
-int duel_engine_step(duel_engine *E, uint32_t n);
+DUEL_RUN_API int duel_engine_step(duel_engine *E, uint32_t n);
 /* Asks the generation in flight to be the last: async-signal-safe, from any thread. */
-void duel_engine_stop(duel_engine *E);
+DUEL_RUN_API void duel_engine_stop(duel_engine *E);
 /* The flag duel_engine_stop sets, for a signal handler (duel_signal_install); cleared by duel_engine_step. */
-volatile sig_atomic_t *duel_engine_stop_flag(duel_engine *E);
+DUEL_RUN_API volatile sig_atomic_t *duel_engine_stop_flag(duel_engine *E);
 
 /* The generation to play next, and the run's total. */
-uint32_t duel_engine_generation(const duel_engine *E);
-uint32_t duel_engine_generations(const duel_engine *E);
-const char *duel_engine_dir(const duel_engine *E);
+DUEL_RUN_API uint32_t duel_engine_generation(const duel_engine *E);
+DUEL_RUN_API uint32_t duel_engine_generations(const duel_engine *E);
+DUEL_RUN_API const char *duel_engine_dir(const duel_engine *E);
 /* The run's configuration (config.ini's, with its [overrides]) and the parameters of the generation in flight. */
-const duel_config *duel_engine_config(const duel_engine *E);
-const duel_config *duel_engine_params(const duel_engine *E);
+DUEL_RUN_API const duel_config *duel_engine_config(const duel_engine *E);
+DUEL_RUN_API const duel_config *duel_engine_params(const duel_engine *E);
 /* The coevolution (NULL for a run against fixed opponents) or the fixed run's population (NULL otherwise). */
-const neat_coev *duel_engine_coev(const duel_engine *E);
-const neat_pop *duel_engine_pop(const duel_engine *E);
+DUEL_RUN_API const neat_coev *duel_engine_coev(const duel_engine *E);
+DUEL_RUN_API const neat_pop *duel_engine_pop(const duel_engine *E);
 /* The game threads the run plays on. */
-uint32_t duel_engine_threads(const duel_engine *E);
+DUEL_RUN_API uint32_t duel_engine_threads(const duel_engine *E);
 /* The last DUEL_SAY_ERROR line ("" when none). */
-const char *duel_engine_last_error(const duel_engine *E);
+DUEL_RUN_API const char *duel_engine_last_error(const duel_engine *E);
 
 /* Writes the run's last lines into log.txt (time spent, MPI), gives the directory's lock back and frees E.
  * DUEL_ENGINE_OK, or DUEL_ENGINE_E_SYSTEM when log.txt could not be written during the run. NULL is accepted. */
-int duel_engine_close(duel_engine *E);
+DUEL_RUN_API int duel_engine_close(duel_engine *E);
 
 /* Another NEAT's reproduction for the coevolution runs this process starts whose [run] reproduction is `which`
  * (enum duel_reproduction; tools/neatcpp/neatcpp_duel.cpp: NEAT C++ 1.2.1's own): begin(ud, cfg) when such a
@@ -112,7 +118,15 @@ typedef struct duel_reproducer {
     neat_coev_reproduce_fn reproduce;
     void *ud;
 } duel_reproducer;
-void duel_engine_set_reproducer(const duel_reproducer *r);
+DUEL_RUN_API void duel_engine_set_reproducer(const duel_reproducer *r);
+
+/* What records a generation's champion games (options' record_games) as event logs in DIR/games/: duel_evolve's
+ * LCM recorder (tools/lcm/duel_lcm_champ.h), registered by a program that has it, process-wide. Without one,
+ * record_games is refused. 0, or -1 with one line in msg. */
+typedef int (*duel_engine_game_recorder)(const char *dir, uint32_t generation, uint32_t champion_pop,
+                                         const neat_genome *champion, const neat_genome *other,
+                                         const neat_params *p, const duel_rules *rules, char *msg, size_t cap);
+DUEL_RUN_API void duel_engine_set_game_recorder(duel_engine_game_recorder fn);
 
 /* Where a run's games may go besides the engine's threads (duel_evolve's MPI ranks, tools/mpi/): registered by a
  * program that has such an executor, process-wide; without one, every game is played on the engine's threads. */
@@ -124,6 +138,10 @@ typedef struct duel_engine_executor {
     void (*describe)(char *out, size_t cap); /* a line for log.txt at the end ("" for none) */
     int (*stop_requested)(void);             /* 1 when the run should stop after the generation in flight */
 } duel_engine_executor;
-void duel_engine_set_executor(const duel_engine_executor *x);
+DUEL_RUN_API void duel_engine_set_executor(const duel_engine_executor *x);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* DUEL_ENGINE_H */

@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "duel_config.h"
 #include "duel_engine.h"
 #include "duel_files.h"
 #include "duel_fixed.h"

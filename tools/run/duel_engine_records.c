@@ -16,10 +16,30 @@
 #include "duel_files.h"
 #include "duel_generations.h"
 #include "duel_genome_file.h"
-#include "duel_lcm_champ.h"
+#include "duel_fixed.h"
 #include "duel_pairs.h"
 #include "duel_text.h"
 #include "neat_phenotype.h"
+
+/* The champion games' recorder, registered by a program that has one (duel_engine.h). */
+static duel_engine_game_recorder duel_recorder;
+
+void duel_engine_set_game_recorder(duel_engine_game_recorder fn)
+{
+    duel_recorder = fn;
+}
+
+static int de_record_games(const char *dir, uint32_t generation, uint32_t champion_pop, const neat_genome *champion,
+                           const neat_genome *other, const neat_params *p, const duel_rules *rules, char *msg,
+                           size_t cap)
+{
+    char esc[1100];
+    if (duel_recorder != NULL)
+        return duel_recorder(dir, generation, champion_pop, champion, other, p, rules, msg, cap);
+    snprintf(msg, cap, "%s: --record-champion-games needs a build with LCM (duel_evolve itself)",
+             duel_text_escape(dir, esc, sizeof esc));
+    return -1;
+}
 
 /* checkpoint.bin, replaced atomically: the generation is saved. */
 static int duel_save_checkpoint(duel_engine *R)
@@ -112,7 +132,7 @@ int de_record(duel_engine *R, const neat_coev_report *rep, double secs)
         return -1;
     }
     if (R->record_games &&
-        duel_lcm_record_champion_games(R->dir, rep->generation, rep->champion_pop, neat_coev_champion(R->coev),
+        de_record_games(R->dir, rep->generation, rep->champion_pop, neat_coev_champion(R->coev),
                                        neat_coev_hof(R->coev, rep->champion_pop ^ 1u, rep->generation), np,
                                        &R->cfg.world, err, sizeof err) != 0) {
         de_err(R, "%s", de_esc_msg(R, err));
