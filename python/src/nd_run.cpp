@@ -1,6 +1,5 @@
-// nd_run.cpp - duel_evolve's run and resume called in this process (tools/cli/duel_run.c, the very code of the
-// command): a run started from Python is a duel_evolve run directory, which the command resumes, and the other way
-// round; and a run directory's records read back by the C readers.
+// nd_run.cpp - duel_evolve's ladder, compare and export called in this process (tools/cli/, the very code of the
+// commands), and a run directory's records read back by the C readers. (A run is the run engine: nd_engine.cpp.)
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -37,16 +36,13 @@ static std::string nd_take(FILE *f)
 static std::tuple<int, std::string, std::string> nd_duel_evolve(const std::string &command,
                                                                 const std::vector<std::string> &args, bool keep_stdout)
 {
-    int (*cmd)(int, char **) = command == "run"      ? duel_cmd_run
-                               : command == "resume" ? duel_cmd_resume
-                               : command == "export" ? duel_cmd_export
+    int (*cmd)(int, char **) = command == "export"   ? duel_cmd_export
                                : command == "ladder" ? duel_cmd_ladder
                                : command == "compare" ? duel_cmd_compare
                                                      : nullptr;
     if (cmd == nullptr)
-        throw nd_error(NEAT_E_ARG, "command: 'run', 'resume', 'ladder', 'compare' or 'export'");
-    // the commands keep process-wide state (the stop flag, the run directory's lock, fds 1 and 2 redirected here):
-    // one at a time in a process, as in duel_evolve
+        throw nd_error(NEAT_E_ARG, "command: 'ladder', 'compare' or 'export' (a run is neat_duel.runs.Run)");
+    // the commands' output goes to fds 1 and 2, redirected here for the call: one at a time in a process
     static std::mutex one;
     std::unique_lock<std::mutex> held(one, std::try_to_lock);
     if (!held.owns_lock())
@@ -169,7 +165,7 @@ static nb::list nd_generations(const std::string &dir)
 void nd_bind_run(nb::module_ &m)
 {
     m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"), nb::arg("keep_stdout") = false,
-          "duel_evolve COMMAND ARGS (run, resume, ladder, compare, export) in this process: (exit status, what it wrote\n"
+          "duel_evolve COMMAND ARGS (ladder, compare, export) in this process: (exit status, what it wrote\n"
           "to stdout when keep_stdout, else '', what it wrote to stderr).");
     m.def("read_dominance", &nd_dominance, nb::arg("directory"),
           nb::sig("def read_dominance(directory: str) -> list[dict[str, typing.Any]]"),

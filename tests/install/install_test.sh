@@ -25,6 +25,16 @@ run_parity() {
   [[ $out == "3-bit parity solved in generation "* ]] || fail "$1: unexpected output: $out"
 }
 
+# the run engine's example: 10 generations of tests/tools/coev-small.ini into a fresh run directory, a line each
+run_engine_check() {
+  local out
+  rm -rf "$2"
+  out=$("$1" "$src/tests/tools/coev-small.ini" "$2") || fail "$1 exited $?: $out"
+  [[ $(grep -c '^generation [0-9]* of 10: ' <<< "$out") == 10 && -f $2/checkpoint.bin && -f $2/dominance.csv ]] ||
+    fail "$1: unexpected output or run directory: $out"
+  echo "$out" | grep '^generation 10 of 10'
+}
+
 case $step in
 prefix-static | prefix-shared)
   kind=${step#prefix-}
@@ -39,11 +49,11 @@ prefix-static | prefix-shared)
   libdir=$(cd "$p" && ls -d lib*/pkgconfig | head -1) || fail "no pkgconfig directory under $p"
   libdir=${libdir%/pkgconfig}
   for f in include/neat_duel/{neat.h,neat_coev.h,neat_phenotype.h,nrt.h,nrt_dense.h,duel.h,neat_duel_version.h} \
-           "$libdir"/pkgconfig/{neat,nrt,duelsim}.pc "$libdir"/cmake/neat_duel/neat_duel{Config,ConfigVersion,Targets}.cmake \
+           include/neat_duel/{duel_engine.h,duel_config.h} "$libdir"/pkgconfig/{neat,nrt,duelsim,duelengine}.pc "$libdir"/cmake/neat_duel/neat_duel{Config,ConfigVersion,Targets}.cmake \
            share/doc/neat_duel/LICENSE; do
     [[ -f $p/$f ]] || fail "not installed: $f"
   done
-  for l in neat nrt duelsim; do
+  for l in neat nrt duelsim duelengine; do
     if [[ $kind == shared ]]; then
       so=$p/$libdir/lib$l.so
       [[ -f $so ]] || fail "no $so"
@@ -71,6 +81,12 @@ find-package-static | find-package-shared)
   done
   run_parity "$work/$kind/parity/parity"
   "$work/$kind/coev_game/coev_game" | tail -1
+  # the run engine's example (docs/library.md): a small coevolution into a run directory
+  rm -rf "$work/$kind/run_engine"
+  run_quiet cmake -S "$src/examples/run_engine" -B "$work/$kind/run_engine" "${gen[@]}" -DCMAKE_C_COMPILER="$cc" \
+    -DCMAKE_PREFIX_PATH="$work/$kind/prefix"
+  run_quiet cmake --build "$work/$kind/run_engine"
+  run_engine_check "$work/$kind/run_engine/run_engine" "$work/$kind/run-fp"
   if [[ $kind == shared ]]; then
     # (ldd's output whole first: grep -q leaving early would break ldd's pipe, a failure under pipefail)
     libs=$(ldd "$work/$kind/parity/parity")
@@ -90,13 +106,18 @@ pkg-config-static | pkg-config-shared)
   # shellcheck disable=SC2086
   "$cc" -std=c99 -o "$work/$kind/parity-pc" "$src/examples/parity/parity.c" $flags
   LD_LIBRARY_PATH=$(dirname "$pcdir") run_parity "$work/$kind/parity-pc"
+  flags=$(PKG_CONFIG_PATH=$pcdir pkg-config "${static[@]}" --cflags --libs duelengine)
+  echo "cc run_engine.c $flags"
+  # shellcheck disable=SC2086
+  "$cc" -std=c99 -o "$work/$kind/run_engine-pc" "$src/examples/run_engine/run_engine.c" $flags
+  LD_LIBRARY_PATH=$(dirname "$pcdir") run_engine_check "$work/$kind/run_engine-pc" "$work/$kind/run-pc"
   ;;
 symbols)
   p=$work/shared/prefix
   # every function the installed public headers declare (comments dropped first), not the static inline ones
   declared=$(cat "$p"/include/neat_duel/*.h | "$cc" -w -fpreprocessed -dD -E -P - |
              grep -v '^static inline' | grep -oE '\b(neat|nrt|duel)_[A-Za-z0-9_]+[[:space:]]*\(' | tr -d '( ' | sort -u)
-  exported=$(for l in neat nrt duelsim; do nm -D --defined-only "$p"/lib*/lib$l.so; done | awk '{print $3}' | sort -u)
+  exported=$(for l in neat nrt duelsim duelengine; do nm -D --defined-only "$p"/lib*/lib$l.so; done | awk '{print $3}' | sort -u)
   extra=$(comm -13 <(echo "$declared") <(echo "$exported"))
   missing=$(comm -23 <(echo "$declared") <(echo "$exported"))
   [[ -z $extra ]] || fail "exported but not declared in a public header: $(echo $extra)"

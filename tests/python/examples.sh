@@ -18,4 +18,11 @@ grep -q "dominant strategies; the top one" race.log || fail "race_to_ten.py: $(t
 "$py" "$ex/robot_duel.py" --generations 3 --set pop_size=16 --threads 2 --out duel.png > duel.log ||
   fail "robot_duel.py: $(tail -3 duel.log)"
 [ "$(head -c 8 duel.png | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || fail "robot_duel.py: duel.png is no PNG"
+"$py" "$ex/run_reporters.py" --set pop_size=16 --set generations=40 --levels 3 --threads 2 --out rr > rr.log ||
+  fail "run_reporters.py: $(tail -3 rr.log)"
+grep -q "^3 levels at generation" rr.log || fail "run_reporters.py did not stop at 3 levels: $(tail -3 rr.log)"
+grep -q "^generation [0-9]*: dominant 3 " rr.log || fail "run_reporters.py: no reporter line: $(cat rr.log)"
+[ -f rr/checkpoint.bin ] && [ ! -e rr/checkpoint.bin.tmp ] || fail "run_reporters.py: no run directory"
+"$py" -c "from neat_duel import runs; import sys; r = runs.resume('rr'); sys.exit(r.checkpoint().generation != 40)" ||
+  fail "the example's run did not resume to its end"
 echo "examples: ok"
