@@ -62,28 +62,19 @@ static void duel_inspect_world(const uint8_t *tag, size_t len)
 }
 
 /* A run against fixed opponents: its population checkpoint. */
-static int duel_inspect_pop_ckpt(const char *path, const uint8_t *buf, size_t len)
+static void duel_inspect_pop_ckpt(const char *path, neat_pop *pop, uint32_t format)
 {
-    neat_pop *pop;
-    size_t off = 0, tlen = 0;
+    size_t tlen = 0;
     const uint8_t *tag;
-    int e = neat_pop_load(&pop, buf, len, NULL, &off);
-    if (e) {
-        fprintf(stderr, "duel_evolve: %s: offset %zu: %s\n", duel_esc(path), off, neat_strerror(e));
-        return 2;
-    }
     printf("file: %s\n", path);
     /* the file's own format: 3, or 4 with NEAT C++ 1.2.1's switches (the loader checked bytes 8-11) */
-    printf("population checkpoint (a run against fixed opponents), format %u: next generation %u\n",
-           (unsigned)((uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24),
+    printf("population checkpoint (a run against fixed opponents), format %u: next generation %u\n", format,
            neat_pop_generation(pop));
     printf("mode: %s, net_step %s\n", duel_mode_name(neat_pop_params(pop)->mode),
            neat_pop_params(pop)->net_step == NEAT_STEP_PROPAGATE ? "propagate" : "sync");
     duel_inspect_pop(pop, "population");
     tag = neat_pop_game(pop, &tlen);
     duel_inspect_world(tag, tlen);
-    neat_pop_free(pop);
-    return 0;
 }
 
 int duel_inspect_run(const char *arg)
@@ -100,23 +91,23 @@ int duel_inspect_run(const char *arg)
     else
         snprintf(path, sizeof path, "%s", arg);
     {
-        /* the kind of checkpoint by its magic: a population's is a run against fixed opponents */
-        uint8_t *buf = NULL;
-        size_t len = 0;
-        if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) == 0) {
-            if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_POP) {
-                e = duel_inspect_pop_ckpt(path, buf, len);
-                free(buf);
-                return e;
-            }
-            free(buf);
+        /* either kind of checkpoint: a population's is a run against fixed opponents' */
+        char msg[4600];
+        neat_pop *pop;
+        uint32_t format = 0;
+        e = duel_any_ckpt_load_msg("", path, &c, &pop, &format, msg, sizeof msg);
+        if (e > 0)
+            fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), strerror(ENOENT));
+        else if (e < 0)
+            fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+        if (e != 0)
+            return 2;
+        if (pop != NULL) {
+            duel_inspect_pop_ckpt(path, pop, format);
+            neat_pop_free(pop);
+            return 0;
         }
     }
-    e = duel_ckpt_load("", path, &c);
-    if (e > 0)
-        fprintf(stderr, "duel_evolve: %s: cannot read: %s\n", duel_esc(path), strerror(ENOENT));
-    if (e != 0)
-        return 2;
     s = neat_coev_start(c);
     duel_innov_range(s, &lo, &hi);
     printf("file: %s\n", path);

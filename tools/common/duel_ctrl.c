@@ -305,14 +305,18 @@ int duel_run_is_fixed(const char *dir)
     return yes;
 }
 
-int duel_ckpt_load_msg(const char *prefix, const char *path, neat_coev **out, char *msg, size_t cap)
+int duel_any_ckpt_load_msg(const char *prefix, const char *path, neat_coev **coev, neat_pop **pop, uint32_t *format,
+                           char *msg, size_t cap)
 {
     uint8_t *buf;
     size_t len, off = 0;
-    uint32_t v;
+    uint32_t v = 0;
     char esc[1100];
-    int err;
-    *out = NULL;
+    int err, kind;
+    if (coev != NULL)
+        *coev = NULL;
+    if (pop != NULL)
+        *pop = NULL;
     msg[0] = '\0';
     duel_text_escape(path, esc, sizeof esc);
     if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
@@ -322,21 +326,34 @@ int duel_ckpt_load_msg(const char *prefix, const char *path, neat_coev **out, ch
                  errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
         return -1;
     }
-    if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_POP) {
-        duel_fixed_run_refused_msg(prefix, path, msg, cap);
-        free(buf);
-        return -1;
-    }
-    err = neat_coev_load(out, buf, len, NULL, &off);
-    if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && neat_checkpoint_kind(buf, len) == NEAT_CKPT_COEV) {
+    kind = neat_checkpoint_kind(buf, len);
+    if (len >= 12)
         v = (uint32_t)buf[8] | (uint32_t)buf[9] << 8 | (uint32_t)buf[10] << 16 | (uint32_t)buf[11] << 24;
+    if (format != NULL)
+        *format = v;
+    /* the kind by its magic: a population's is a run against fixed opponents'; a kind not wanted is not loaded */
+    if ((kind == NEAT_CKPT_POP && pop == NULL) || (kind != NEAT_CKPT_POP && coev == NULL)) {
+        free(buf);
+        return -2;
+    }
+    err = kind == NEAT_CKPT_POP ? neat_pop_load(pop, buf, len, NULL, &off) : neat_coev_load(coev, buf, len, NULL, &off);
+    if (err == NEAT_E_FORMAT && off == 8 && len >= 12 && kind == NEAT_CKPT_COEV)
         snprintf(msg, cap, "%s%s: offset 8: checkpoint format %lu, but this duel_evolve reads format %d "
                            "(docs/formats.md)", prefix, esc, (unsigned long)v, NEAT_COEV_CHECKPOINT_VERSION);
-    } else if (err) {
+    else if (err)
         snprintf(msg, cap, "%s%s: offset %zu: %s", prefix, esc, off, neat_strerror(err));
-    }
     free(buf);
     return err ? -1 : 0;
+}
+
+int duel_ckpt_load_msg(const char *prefix, const char *path, neat_coev **out, char *msg, size_t cap)
+{
+    int r = duel_any_ckpt_load_msg(prefix, path, out, NULL, NULL, msg, cap);
+    if (r == -2) {
+        duel_fixed_run_refused_msg(prefix, path, msg, cap);
+        return -1;
+    }
+    return r;
 }
 
 int duel_ckpt_load(const char *prefix, const char *path, neat_coev **out)
@@ -378,28 +395,20 @@ int duel_ckpt_world(const struct neat_coev *c, const char *path, duel_rules *r)
 int duel_run_world_msg(const char *dir, duel_rules *r, char *msg, size_t cap)
 {
     char path[4200], esc[1100];
-    struct neat_coev *c;
-    uint8_t *buf = NULL;
-    size_t len = 0;
+    neat_coev *c;
+    neat_pop *pop;
     int e;
     if ((size_t)snprintf(path, sizeof path, "%s/checkpoint.bin", dir) >= sizeof path) {
         snprintf(msg, cap, "%s: the path is too long", duel_text_escape(dir, esc, sizeof esc));
         return -1;
     }
     /* a run against fixed opponents checkpoints one population: its tag the same */
-    if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0)
-        buf = NULL;
-    if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_POP) {
-        neat_pop *pop;
+    e = duel_any_ckpt_load_msg("", path, &c, &pop, NULL, msg, cap);
+    if (e < 0)
+        return -1;
+    if (e == 0 && pop != NULL) {
         size_t off = 0, tlen = 0;
-        const uint8_t *tag;
-        e = neat_pop_load(&pop, buf, len, NULL, &off);
-        free(buf);
-        if (e) {
-            snprintf(msg, cap, "%s: offset %zu: %s", duel_text_escape(path, esc, sizeof esc), off, neat_strerror(e));
-            return -1;
-        }
-        tag = neat_pop_game(pop, &tlen);
+        const uint8_t *tag = neat_pop_game(pop, &tlen);
         e = tlen >= DUEL_RULES_BYTES ? duel_rules_decode(r, tag, DUEL_RULES_BYTES, &off) : DUEL_E_RULES;
         neat_pop_free(pop);
         if (e != DUEL_OK) {
@@ -409,10 +418,6 @@ int duel_run_world_msg(const char *dir, duel_rules *r, char *msg, size_t cap)
         }
         return 0;
     }
-    free(buf);
-    e = duel_ckpt_load_msg("", path, &c, msg, cap);
-    if (e < 0)
-        return -1;
     if (e == 0) {
         e = duel_ckpt_world_msg(c, path, r, msg, cap);
         neat_coev_free(c);

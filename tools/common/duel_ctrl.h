@@ -84,6 +84,12 @@ struct neat_coev;
 int duel_ckpt_load(const char *prefix, const char *path, struct neat_coev **out);
 /* The same, printing nothing: -1 with the line in msg (as duel_read_blob_msg's). */
 int duel_ckpt_load_msg(const char *prefix, const char *path, struct neat_coev **out, char *msg, size_t cap);
+/* Either checkpoint at path, by its magic: a coevolution's into *coev or a population's (a run against fixed
+ * opponents) into *pop, the other NULL; *format (NULL: not wanted) the file's format word (bytes 8-11). 0; 1 when
+ * the file does not exist; -2 when it is of the kind whose pointer is NULL (not loaded, nothing in msg); -1 with
+ * the line in msg, "PREFIXPATH: ..." (the one loader of both kinds). */
+int duel_any_ckpt_load_msg(const char *prefix, const char *path, struct neat_coev **coev, struct neat_pop **pop,
+                           uint32_t *format, char *msg, size_t cap);
 /* 1 when dir's checkpoint.bin is a run's against fixed opponents (a population's, "NEATCKPT"). */
 int duel_run_is_fixed(const char *dir);
 /* The one line that refuses such a run's checkpoint (at path) where a coevolution's is needed. */

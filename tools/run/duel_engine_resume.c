@@ -136,27 +136,14 @@ static int duel_check_start(duel_engine *R, const char *ckpt)
  * does not exist; -1 after one line naming the file and the offset. */
 static int duel_pop_ckpt_load(duel_engine *R, const char *path, neat_pop **out)
 {
-    uint8_t *buf;
-    size_t len, off = 0;
-    int err;
-    *out = NULL;
-    if (duel_file_read(path, DUEL_CKPT_MAX, &buf, &len) != 0) {
-        if (errno == ENOENT)
-            return 1;
-        de_err(R, "%s: cannot read: %s\n", de_esc(R, path), errno == EFBIG ? "larger than 1 GB" : duel_file_strerror(errno));
-        return -1;
-    }
-    if (neat_checkpoint_kind(buf, len) == NEAT_CKPT_COEV) {
-        de_err(R, "%s: a coevolution's checkpoint, but config.ini names [opponents]: restore the "
-                        "run's config.ini\n", de_esc(R, path));
-        free(buf);
-        return -1;
-    }
-    err = neat_pop_load(out, buf, len, NULL, &off);
-    if (err)
-        de_err(R, "%s: offset %zu: %s\n", de_esc(R, path), off, neat_strerror(err));
-    free(buf);
-    return err ? -1 : 0;
+    char msg[4600];
+    int r = duel_any_ckpt_load_msg("", path, NULL, out, NULL, msg, sizeof msg);
+    if (r == -2)
+        de_err(R, "%s: a coevolution's checkpoint, but config.ini names [opponents]: restore the run's config.ini",
+               de_esc(R, path));
+    else if (r < 0)
+        de_err(R, "%s", de_esc_msg(R, msg));
+    return r < 0 ? -1 : r;
 }
 
 /* 1 when one of the overrides sets [run] key (KEY=... or run.KEY=...). */
