@@ -8,6 +8,9 @@
 
 #include "duel.h"
 #include "nd.h"
+extern "C" {
+#include "duel_runtag.h"
+}
 
 // numpy's structured dtypes of the C structs (neat_node, neat_conn), built once by neat_duel._dtypes from these
 static_assert(sizeof(neat_node) == 8 && offsetof(neat_node, type) == 4, "neat_node layout");
@@ -177,9 +180,8 @@ void nd_bind_genome(nb::module_ &m)
                      "The network step it is evaluated with, 'sync' or 'propagate': its population's, or what\n"
                      "its genome file records (a file of format 1 records none: 'sync').")
         .def_prop_ro("world_id", [](const nd_genome &s) -> nb::object {
-                duel_rules r;
-                if (s.origin_tag.size() < DUEL_RULES_BYTES ||
-                    duel_rules_decode(&r, (const uint8_t *)s.origin_tag.data(), DUEL_RULES_BYTES, nullptr) != DUEL_OK)
+                duel_rules r; // a file without a tag, or with another program's, names no world
+                if (duel_tag_world((const uint8_t *)s.origin_tag.data(), s.origin_tag.size(), &r, nullptr) != 0)
                     return nb::none();
                 return nb::int_(duel_rules_id(&r));
             }, nb::sig("def world_id(self) -> int | None"),

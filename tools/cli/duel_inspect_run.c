@@ -9,6 +9,7 @@
 #include "duel_files.h"
 #include "duel_world_cfg.h"
 #include "neat_coev.h"
+#include "duel_runtag.h"
 #include "duel_text.h"
 
 
@@ -51,9 +52,9 @@ static void duel_inspect_pop(const neat_pop *pop, const char *name)
 /* The world of a checkpoint's game tag (its first DUEL_RULES_BYTES; none: v1) */
 static void duel_inspect_world(const uint8_t *tag, size_t len)
 {
-    duel_rules r = *duel_rules_v1();
+    duel_rules r;
     char label[40];
-    if (len >= DUEL_RULES_BYTES && duel_rules_decode(&r, tag, DUEL_RULES_BYTES, NULL) != DUEL_OK) {
+    if (duel_tag_world(tag, len, &r, NULL) < 0) {
         printf("world: damaged rules in the checkpoint's tag\n");
         return;
     }

@@ -8,6 +8,7 @@
 #include "neat_coev.h"
 #include "duel_config.h"
 #include "duel_files.h"
+#include "duel_runtag.h"
 #include "duel_text.h"
 #include "duel_world_cfg.h"
 
@@ -74,8 +75,7 @@ static int duel_origin_of_bytes(const char *path, const uint8_t *buf, size_t len
             o->net_step = go.net_step;
             o->step_from = DUEL_ORIGIN_FILE;
             /* the run's tag: the world's rules first (another program's tag names no world) */
-            if (go.tag_len >= DUEL_RULES_BYTES &&
-                duel_rules_decode(&o->world, go.tag, DUEL_RULES_BYTES, NULL) == DUEL_OK)
+            if (duel_tag_world(go.tag, go.tag_len, &o->world, NULL) == 0)
                 o->world_from = DUEL_ORIGIN_FILE;
         }
     } else if (len >= 6 && memcmp(buf, "NRTB", 4) == 0) {
@@ -370,12 +370,9 @@ int duel_ckpt_world_msg(const struct neat_coev *c, const char *path, duel_rules 
     size_t len = 0, off = 0;
     const uint8_t *tag = neat_coev_game(c, &len);
     char esc[1100];
-    if (len == 0) {
-        *r = *duel_rules_v1();
-        return 0;
-    }
-    /* the rules' bytes come first; what follows is the run's own (docs/tools.md, "The run directory") */
-    if (duel_rules_decode(r, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, &off) != DUEL_OK) {
+    /* the rules' bytes come first; what follows is the run's own (docs/tools.md, "The run directory"); no tag:
+     * world v1 */
+    if (duel_tag_world(tag, len, r, &off) < 0) {
         snprintf(msg, cap, "%s: its world's rules (the game tag) are damaged at byte %zu of %zu",
                  duel_text_escape(path, esc, sizeof esc), off, len);
         return -1;
@@ -407,11 +404,11 @@ int duel_run_world_msg(const char *dir, duel_rules *r, char *msg, size_t cap)
     if (e < 0)
         return -1;
     if (e == 0 && pop != NULL) {
-        size_t off = 0, tlen = 0;
+        size_t tlen = 0;
         const uint8_t *tag = neat_pop_game(pop, &tlen);
-        e = tlen >= DUEL_RULES_BYTES ? duel_rules_decode(r, tag, DUEL_RULES_BYTES, &off) : DUEL_E_RULES;
+        e = duel_tag_world(tag, tlen, r, NULL); /* such a run's tag always names its world */
         neat_pop_free(pop);
-        if (e != DUEL_OK) {
+        if (e != 0) {
             snprintf(msg, cap, "%s: its world's rules (the game tag) are missing or damaged",
                      duel_text_escape(path, esc, sizeof esc));
             return -1;

@@ -55,6 +55,24 @@ int duel_run_tag(const duel_config *cfg, const duel_opp_id *opp, uint8_t buf[DUE
     return 0;
 }
 
+int duel_tag_world(const uint8_t *tag, size_t len, duel_rules *r, size_t *off)
+{
+    duel_rules got;
+    if (len == 0) {
+        *r = *duel_rules_v1();
+        return 1;
+    }
+    if (len < DUEL_RULES_BYTES) {
+        if (off != NULL)
+            *off = len;
+        return -1;
+    }
+    if (duel_rules_decode(&got, tag, DUEL_RULES_BYTES, off) != DUEL_OK)
+        return -1;
+    *r = got;
+    return 0;
+}
+
 size_t duel_run_tag_overrides(const uint8_t *tag, size_t len)
 {
     /* the rules, "RUN1", train_layouts, the number of opponents n, and with n > 0 four u32 and n records of 12 */

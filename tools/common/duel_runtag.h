@@ -21,6 +21,11 @@ typedef struct duel_opp_id {
  * it. 0, or NEAT_E_ARG (rules that do not encode). */
 #define DUEL_TAG_MAX (DUEL_RULES_BYTES + 32 + 12 * DUEL_MAX_OPPONENTS + 8 + (8 + DUEL_OVERRIDE_MAX) * DUEL_MAX_OVERRIDES)
 int duel_run_tag(const duel_config *cfg, const duel_opp_id *opp, uint8_t buf[DUEL_TAG_MAX], size_t *len);
+/* The world a game tag names (a run's checkpoint, a genome file's origin): its first DUEL_RULES_BYTES are the
+ * rules. 0 with them in *r; 1 for an empty tag (a run from before the rules were data: *r is world v1, which a
+ * caller may take or not); -1 for a tag too short or whose rules do not decode (*off, when not NULL, the byte).
+ * The one decoder of a tag's world: each caller says what an empty or damaged one means to it. */
+int duel_tag_world(const uint8_t *tag, size_t len, duel_rules *r, size_t *off);
 /* Where a run tag's overrides ("OVR1", then their count and each generation, length and text) start: the
  * offset of "OVR1" after the rules, or len when it has none. */
 size_t duel_run_tag_overrides(const uint8_t *tag, size_t len);

@@ -77,8 +77,7 @@ static int duel_check_tag(duel_engine *R, const uint8_t *tag, size_t len, const 
     char a[40], b[40];
     if (de_run_tag_of(R, want, &wlen) != 0)
         return -1;
-    made = *duel_rules_v1();
-    if (len > 0 && duel_rules_decode(&made, tag, len < DUEL_RULES_BYTES ? len : DUEL_RULES_BYTES, NULL) != DUEL_OK) {
+    if (duel_tag_world(tag, len, &made, NULL) < 0) { /* an empty tag: world v1 */
         de_err(R, "%s: its world's rules (the game tag) are damaged\n", de_esc(R, path));
         return -1;
     }
