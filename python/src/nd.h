@@ -117,6 +117,7 @@ void nd_write_file(const std::string &path, const uint8_t *bytes, size_t len);
 // The whole regular file at path, at most cap bytes; raises OSError (or a format error for a larger file).
 std::vector<uint8_t> nd_read_file(const std::string &path, size_t cap);
 
+
 void nd_bind_errors(nb::module_ &m);
 void nd_bind_params(nb::module_ &m);
 void nd_bind_genome(nb::module_ &m);
@@ -158,6 +159,23 @@ template <> struct type_caster<nd_path> {
     }
 };
 } // namespace nanobind::detail
+
+// A class whose objects come from a file's bytes: its static from_bytes (or from_blob: bytes_fn) and load, the one
+// way a binding reads a file (at most cap bytes, nd_read_file) and hands the bytes to its decoder, which names the
+// file (or the name given, "<bytes>") in its errors.
+template <class T>
+void nd_def_file_loaders(nb::class_<T> &cls, T *(*decode)(const uint8_t *, size_t, const std::string &), size_t cap,
+                         const char *bytes_fn, const char *bytes_arg, const char *bytes_doc, const char *load_doc)
+{
+    cls.def_static(bytes_fn, [decode](nb::bytes data, const std::string &name) {
+            return decode((const uint8_t *)data.c_str(), data.size(), name);
+        }, nb::arg(bytes_arg), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership, bytes_doc);
+    cls.def_static("load", [decode, cap](const nd_path &fpath) {
+            const std::string path = fpath.string();
+            std::vector<uint8_t> b = nd_read_file(path, cap);
+            return decode(b.data(), b.size(), path);
+        }, nb::arg("path"), nb::rv_policy::take_ownership, load_doc);
+}
 
 // The parameters object bound as neat_duel.Params.
 struct nd_params {

@@ -188,7 +188,7 @@ nd_coev *nd_coev_wrap(neat_coev *c)
 
 void nd_bind_coev(nb::module_ &m)
 {
-    nb::class_<nd_coev>(m, "Coevolution",
+    nb::class_<nd_coev> coev = nb::class_<nd_coev>(m, "Coevolution",
                         "Competitive coevolution (Stanley & Miikkulainen 2004, section 5): two populations, A and B,\n"
                         "each host playing the other population's best species' champions and its hall of fame;\n"
                         "the dominance tournament records every new dominant strategy. The game is yours (a Python\n"
@@ -308,20 +308,13 @@ void nd_bind_coev(nb::module_ &m)
                 nb::bytes b = nd_coev_bytes(s);
                 nd_write_file(path, (const uint8_t *)b.c_str(), b.size());
             }, nb::arg("path"), "Writes the checkpoint through a temporary file and a rename.")
-        .def_static("from_bytes", [](nb::bytes data, const std::string &name) {
-                return nd_coev_from_bytes((const uint8_t *)data.c_str(), data.size(), name);
-            }, nb::arg("data"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
-            "A checkpoint's bytes, checked before any is trusted (FormatError names the byte offset).")
-        .def_static("load", [](const nd_path &fpath) {
-                const std::string path = fpath.string();
-                std::vector<uint8_t> b = nd_read_file(path, ND_CKPT_MAX);
-                return nd_coev_from_bytes(b.data(), b.size(), path);
-            }, nb::arg("path"), nb::rv_policy::take_ownership,
-            "Reads a coevolution checkpoint: Coevolution.save's, or a duel_evolve run's checkpoint.bin.")
         .def("__repr__", [](const nd_coev &s) {
                 neat_coev *c = nd_c(s);
                 return "Coevolution(2 x " + std::to_string(neat_pop_size(neat_coev_pop(c, 0))) + " genomes, generation " +
                        std::to_string(neat_coev_generation(c)) + ", " + std::to_string(neat_coev_dominant_count(c)) +
                        " dominants)";
             });
+    nd_def_file_loaders(coev, nd_coev_from_bytes, ND_CKPT_MAX, "from_bytes", "data",
+                        "A checkpoint's bytes, checked before any is trusted (FormatError names the byte offset).",
+                        "Reads a coevolution checkpoint: Coevolution.save's, or a duel_evolve run's checkpoint.bin.");
 }

@@ -1,12 +1,10 @@
-// nd_files.cpp - the package's file reads and writes: bounded reads of regular files, and writes through
-// duel_evolve's writer (duel_files.c), so that an interrupted save never leaves half a file in place of a whole one.
+// nd_files.cpp - the package's file reads and writes through duel_evolve's reader and writer (duel_files.c): bounded
+// reads of regular files, and writes that an interruption never leaves half done in place of a whole file.
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <nanobind/stl/string.h>
 
@@ -37,44 +35,26 @@ void nd_write_file(const std::string &path, const uint8_t *bytes, size_t len)
 
 std::vector<uint8_t> nd_read_file(const std::string &path, size_t cap)
 {
-    int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0)
+    // duel_evolve's one reader (duel_files.c): bounded, regular files only (a FIFO or a device is never waited on)
+    uint8_t *data = nullptr;
+    size_t len = 0;
+    int r;
+    {
+        nb::gil_scoped_release nogil;
+        r = duel_file_read(path.c_str(), cap, &data, &len);
+    }
+    if (r == -1)
         nd_os_error(path, "cannot open");
-    struct stat st;
-    if (fstat(fd, &st) != 0) {
-        int e = errno;
-        close(fd);
-        errno = e;
-        nd_os_error(path, "cannot read");
-    }
-    if (!S_ISREG(st.st_mode)) {
-        close(fd);
+    if (r != 0 && (errno == DUEL_ENOTREG || errno == EISDIR))
         throw nd_error(NEAT_E_FORMAT, path + ": not a regular file", path);
-    }
-    if ((unsigned long long)st.st_size > cap) {
-        close(fd);
+    if (r != 0 && errno == EFBIG)
         throw nd_error(NEAT_E_FORMAT,
-                       path + ": " + std::to_string((long long)st.st_size) + " bytes, more than the " +
-                           std::to_string((unsigned long long)cap) + " this kind of file may have",
+                       path + ": more than the " + std::to_string((unsigned long long)cap) +
+                           " bytes this kind of file may have",
                        path);
-    }
-    std::vector<uint8_t> buf((size_t)st.st_size);
-    size_t done = 0;
-    while (done < buf.size()) {
-        ssize_t r = read(fd, buf.data() + done, buf.size() - done);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r < 0) {
-            int e = errno;
-            close(fd);
-            errno = e;
-            nd_os_error(path, "cannot read");
-        }
-        if (r == 0)
-            break; // it shrank meanwhile: what is there
-        done += (size_t)r;
-    }
-    buf.resize(done);
-    close(fd);
+    if (r != 0)
+        nd_os_error(path, "cannot read");
+    std::vector<uint8_t> buf(data, data + len);
+    std::free(data);
     return buf;
 }

@@ -154,7 +154,7 @@ static std::string nd_dot(const nd_genome &s)
 
 void nd_bind_genome(nb::module_ &m)
 {
-    nb::class_<nd_genome>(m, "Genome",
+    nb::class_<nd_genome> genome = nb::class_<nd_genome>(m, "Genome",
                           "One genome: its nodes and connection genes (numpy views of the C arrays), fitness and\n"
                           "species, the network it encodes, its file. A genome taken from a Population is a copy:\n"
                           "the population's next generation does not change it.")
@@ -211,17 +211,6 @@ void nd_bind_genome(nb::module_ &m)
             }, nb::arg("path"),
             "Writes the genome file (what duel_evolve writes as champions/gen-G.genome; a run can start\n"
             "from it), through a temporary file and a rename.")
-        .def_static("from_bytes", [](nb::bytes data, const std::string &name) {
-                return nd_genome_from_bytes((const uint8_t *)data.c_str(), data.size(), name);
-            }, nb::arg("data"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
-            "A genome file's bytes, checked (magic, version, checksum) before anything is trusted;\n"
-            "FormatError names the byte offset of a problem.")
-        .def_static("load", [](const nd_path &fpath) {
-                const std::string path = fpath.string();
-                std::vector<uint8_t> b = nd_read_file(path, ND_GENOME_MAX);
-                return nd_genome_from_bytes(b.data(), b.size(), path);
-            }, nb::arg("path"), nb::rv_policy::take_ownership,
-            "Reads a genome file (FormatError names the file and the byte offset of a problem).")
         .def("to_dot", &nd_dot,
              "The network as Graphviz text (dot -Tsvg): inputs at the bottom, disabled genes dashed.")
         .def("__repr__", [](const nd_genome &s) {
@@ -230,4 +219,8 @@ void nd_bind_genome(nb::module_ &m)
                        " connections (" + std::to_string(neat_genome_enabled_count(&s.gen())) + " enabled), fitness " +
                        f + ")";
             });
+    nd_def_file_loaders(genome, nd_genome_from_bytes, ND_GENOME_MAX, "from_bytes", "data",
+                        "A genome file's bytes, checked (magic, version, checksum) before anything is trusted;\n"
+                        "FormatError names the byte offset of a problem.",
+                        "Reads a genome file (FormatError names the file and the byte offset of a problem).");
 }

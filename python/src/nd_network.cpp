@@ -163,7 +163,7 @@ static nb::list nd_outputs(const nd_network &s)
 
 void nd_bind_network(nb::module_ &m)
 {
-    nb::class_<nd_network>(m, "Network",
+    nb::class_<nd_network> network = nb::class_<nd_network>(m, "Network",
                            "A network in the runtime (Q1.15 fixed point, the same code a microcontroller runs):\n"
                            "inputs in [-1, 1) without the bias (added here; a value outside saturates, NaN is 0),\n"
                            "outputs in [0, 1).")
@@ -256,21 +256,14 @@ void nd_bind_network(nb::module_ &m)
         .def("save", [](const nd_network &s, const nd_path &fpath) {
                 const std::string path = fpath.string(); nd_write_file(path, s.ph.blob, s.ph.blob_len); },
              nb::arg("path"), "Writes the blob, through a temporary file and a rename.")
-        .def_static("from_blob", [](nb::bytes b, const std::string &name) {
-                return nd_network_from_blob((const uint8_t *)b.c_str(), b.size(), name);
-            }, nb::arg("blob"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
-            "A network from a blob, checked by the runtime (size, magic, version, checksum, indices) before\n"
-            "a byte is trusted; FormatError otherwise.")
-        .def_static("load", [](const nd_path &fpath) {
-                const std::string path = fpath.string();
-                std::vector<uint8_t> b = nd_read_file(path, ND_BLOB_MAX);
-                return nd_network_from_blob(b.data(), b.size(), path);
-            }, nb::arg("path"), nb::rv_policy::take_ownership,
-            "Reads a blob file (duel_evolve's champions/gen-G.blob, a Network.save).")
         .def("__repr__", [](const nd_network &s) {
                 return "Network(" + std::to_string(s.ph.net.n_inputs - 1) + " inputs, " +
                        std::to_string(s.ph.net.n_outputs) + " outputs, " + std::to_string(s.ph.net.n_hidden) +
                        " hidden, " + std::to_string(s.ph.net.n_conns) + " connections, " +
                        (s.ph.net.step == NRT_STEP_PROPAGATE ? "propagate" : "sync") + ")";
             });
+    nd_def_file_loaders(network, nd_network_from_blob, ND_BLOB_MAX, "from_blob", "blob",
+                        "A network from a blob, checked by the runtime (size, magic, version, checksum, indices) before\n"
+                        "a byte is trusted; FormatError otherwise.",
+                        "Reads a blob file (duel_evolve's champions/gen-G.blob, a Network.save).");
 }

@@ -227,7 +227,7 @@ void nd_bind_population(nb::module_ &m)
              nb::arg("inputs"), nb::arg("max_steps") = -1,
              "Network.settle for every network (max_steps -1: each network's nodes + 1).");
 
-    nb::class_<nd_population>(m, "Population",
+    nb::class_<nd_population> population = nb::class_<nd_population>(m, "Population",
                               "A NEAT population (libneat). Evolve it with run(fitness, generations), or step by\n"
                               "step: give every genome a fitness (set_fitness, set_fitnesses), then epoch(). The run\n"
                               "is a pure function of (params, seed, fitness values): the same on every machine.")
@@ -427,20 +427,13 @@ void nd_bind_population(nb::module_ &m)
             }, nb::arg("path"),
             "Writes the checkpoint through a temporary file and a rename: loading it and going on gives\n"
             "the run that never stopped.")
-        .def_static("from_bytes", [](nb::bytes data, const std::string &name) {
-                return nd_pop_from_bytes((const uint8_t *)data.c_str(), data.size(), name);
-            }, nb::arg("data"), nb::arg("name") = "<bytes>", nb::rv_policy::take_ownership,
-            "A checkpoint's bytes, checked (magic, version, sizes, checksum) before any is trusted.")
-        .def_static("load", [](const nd_path &fpath) {
-                const std::string path = fpath.string();
-                std::vector<uint8_t> b = nd_read_file(path, ND_CKPT_MAX);
-                return nd_pop_from_bytes(b.data(), b.size(), path);
-            }, nb::arg("path"), nb::rv_policy::take_ownership,
-            "Reads a checkpoint (FormatError names the file and the byte offset of a problem).")
         .def("__repr__", [](const nd_population &s) {
                 neat_pop *pop = nd_pop(s);
                 return "Population(" + std::to_string(neat_pop_size(pop)) + " genomes, generation " +
                        std::to_string(neat_pop_generation(pop)) + ", " + std::to_string(neat_pop_species_count(pop)) +
                        " species)";
             });
+    nd_def_file_loaders(population, nd_pop_from_bytes, ND_CKPT_MAX, "from_bytes", "data",
+                        "A checkpoint's bytes, checked (magic, version, sizes, checksum) before any is trusted.",
+                        "Reads a checkpoint (FormatError names the file and the byte offset of a problem).");
 }
