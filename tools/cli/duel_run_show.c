@@ -231,6 +231,14 @@ int duel_show_play_out(duel_show *S)
     } else if (rc == DUEL_ENGINE_OK) {
         duel_show_done(S);
     }
+    {
+        /* the handler's flag is the engine's until it is closed: from here on a static one (the process may go
+         * on: an MPI rank runs one task after another) */
+        static volatile sig_atomic_t after;
+        after = rc == DUEL_ENGINE_STOPPED ? 1 : *duel_engine_stop_flag(S->E);
+        duel_signal_install(&after, "duel_evolve: a second signal: stopped at once; the last checkpoint stands "
+                                    "(duel_evolve resume continues from it)\n");
+    }
     rc_close = duel_engine_close(S->E);
     S->E = NULL;
     return rc == DUEL_ENGINE_OK ? rc_close : rc;
