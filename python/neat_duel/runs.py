@@ -251,8 +251,8 @@ class Run:
             cfg = DuelConfig.from_ini(name)
         eng, status, lines = RunEngine.new(cfg, os.fspath(out), threads or 0, _sets(set),
                                            -1 if seed is None else seed, generations or 0, name)
+        _show_notes(lines, quiet)
         if eng is None:
-            _show_notes(lines, quiet)
             cls._raise(status, lines, os.fspath(out), "run")
         return cls(eng, reporters, quiet)
 
@@ -272,8 +272,8 @@ class Run:
         checked against its checkpoint, lost records rebuilt, the overrides applied from its next generation."""
         eng, status, lines = RunEngine.resume(os.fspath(directory), threads or 0, _sets(set), generations or 0,
                                               shorten)
+        _show_notes(lines, quiet)
         if eng is None:
-            _show_notes(lines, quiet)
             cls._raise(status, lines, os.fspath(directory), "resume")
         return cls(eng, reporters, quiet)
 
