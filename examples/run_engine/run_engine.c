@@ -13,8 +13,8 @@ static void on_say(void *ud, duel_say_kind kind, const char *text)
 static void on_generation(void *ud, const duel_engine_record *r)
 {
     (void)ud;
-    printf("generation %u of %u: %u dominance levels, champion of %c; %s", r->generation + 1, r->generations,
-           r->dominants, r->coev->champion_pop ? 'B' : 'A', r->generations_rows);
+    printf("generation %u of %u: %u dominance levels; %s", r->generation + 1, r->generations, r->dominants,
+           r->generations_rows);
 }
 
 int main(int argc, char **argv)
@@ -25,11 +25,8 @@ int main(int argc, char **argv)
     char err[600];
     int status;
     duel_config_default(&cfg);
-    if (argc != 3 || duel_config_read(&cfg, argv[1], err, sizeof err) != 0 ||
-        duel_config_check(&cfg, err, sizeof err) != 0) {
-        fprintf(stderr, "run_engine: %s\n", argc != 3 ? "usage: run_engine CONFIG.ini OUT_DIR" : err);
-        return 2;
-    }
+    if (argc != 3 || duel_config_read(&cfg, argv[1], err, sizeof err) || duel_config_check(&cfg, err, sizeof err))
+        return fprintf(stderr, "run_engine: %s\n", argc != 3 ? "usage: run_engine CONFIG.ini OUT_DIR" : err), 2;
     o.hooks.say = on_say;
     o.hooks.generation = on_generation;
     if ((status = duel_engine_new(&run, &cfg, argv[2], &o)) != DUEL_ENGINE_OK)
