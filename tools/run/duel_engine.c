@@ -506,6 +506,20 @@ static int duel_apply_overrides(duel_engine *R, uint32_t g)
     return 0;
 }
 
+/* The generation hook's record of generation g, the fields both kinds of run have: 0 when there is no hook. */
+static int duel_hook_record(duel_engine *R, uint32_t g, double secs, duel_engine_record *rec)
+{
+    if (R->hooks.generation == NULL)
+        return 0;
+    memset(rec, 0, sizeof *rec);
+    rec->generation = g;
+    rec->generations = R->cfg.generations;
+    rec->seconds = secs;
+    rec->generations_rows = R->rows;
+    rec->strength_row = R->have_strength ? R->strength_row : NULL;
+    return 1;
+}
+
 /* A coevolution's generation, recorded: its line in log.txt, and the hook. */
 static void duel_report(duel_engine *R, const neat_coev_report *rep, double secs)
 {
@@ -523,16 +537,10 @@ static void duel_report(duel_engine *R, const neat_coev_report *rep, double secs
            rep->pop[0].species, rep->pop[1].species, de_pop_name(cw), rep->champion_wins[cw],
            rep->champion_wins[cw ^ 1u], cmp_games, rep->dominants, rep->new_dominant ? "new: " : "", dh, de_s(dh), dc,
            de_s(dc), (unsigned long long)rep->games, secs);
-    if (R->hooks.generation == NULL)
+    if (!duel_hook_record(R, rep->generation, secs, &rec))
         return;
-    memset(&rec, 0, sizeof rec);
-    rec.generation = rep->generation;
-    rec.generations = R->cfg.generations;
-    rec.seconds = secs;
     rec.coev = rep;
-    rec.generations_rows = R->rows;
     rec.dominance_row = rep->new_dominant ? R->dominance_row : NULL;
-    rec.strength_row = R->have_strength ? R->strength_row : NULL;
     rec.dominants = rep->dominants;
     rec.dominant_generation = d.generation;
     rec.dominant_hidden = dh;
@@ -557,15 +565,9 @@ static void duel_report_fixed(duel_engine *R, const duel_fixed_report *rep, doub
               "%u connection%s, against %s; %llu games in %.2f s",
            rep->generation, rep->best_fitness, rep->host_games, rep->mean_fitness, rep->species, rep->best_hidden,
            de_s(rep->best_hidden), rep->best_conns, de_s(rep->best_conns), vs, (unsigned long long)rep->games, secs);
-    if (R->hooks.generation == NULL)
+    if (!duel_hook_record(R, rep->generation, secs, &rec))
         return;
-    memset(&rec, 0, sizeof rec);
-    rec.generation = rep->generation;
-    rec.generations = R->cfg.generations;
-    rec.seconds = secs;
     rec.fixed = rep;
-    rec.generations_rows = R->rows;
-    rec.strength_row = R->have_strength ? R->strength_row : NULL;
     R->hooks.generation(R->hooks.ud, &rec);
 }
 
