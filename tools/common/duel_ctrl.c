@@ -225,25 +225,26 @@ int duel_cli_ctrl_open_run_champion(duel_cli_ctrl *c, const char *spec)
     return duel_ctrl_open_in(c, spec, 0);
 }
 
-static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world)
+int duel_ctrl_open_msg(duel_cli_ctrl *c, const char *spec, int want_world, char *msg, size_t cap)
 {
     size_t size, need;
+    char esc[1100];
     int err;
 
     memset(c, 0, sizeof *c);
     snprintf(c->name, sizeof c->name, "%s", spec);
+    duel_text_escape(spec, esc, sizeof esc);
     if (strncmp(spec, "builtin:", 8) == 0) {
         int b = duel_builtin_parse(spec + 8);
         if (b < 0) {
-            fprintf(stderr, "duel_evolve: %s: unknown builtin (idle, spinner, forager, hunter, forager-hunter)\n",
-                    duel_esc(spec));
+            snprintf(msg, cap, "%s: unknown builtin (idle, spinner, forager, hunter, forager-hunter)", esc);
             return -1;
         }
         c->ctrl.builtin = b;
         c->origin.builtin = 1;
         return 0;
     }
-    if (duel_read_blob_print(spec, &c->blob, &size, &c->origin, want_world) != 0)
+    if (duel_read_blob_in(spec, &c->blob, &size, &c->origin, want_world, msg, cap) != 0)
         return -1;
     c->blob_len = size;
     err = nrt_mem_required(c->blob, size, &need);
@@ -252,19 +253,27 @@ static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world)
         err = c->mem == NULL ? NRT_E_NOMEM : nrt_load(&c->net, c->blob, size, c->mem, need);
     }
     if (err) {
-        fprintf(stderr, "duel_evolve: %s: not a valid champion blob: %s\n", duel_esc(spec), nrt_strerror(err));
+        snprintf(msg, cap, "%s: not a valid champion blob: %s", esc, nrt_strerror(err));
         duel_cli_ctrl_close(c);
         return -1;
     }
     if (c->net.n_inputs != DUEL_N_INPUTS || c->net.n_outputs != DUEL_N_OUTPUTS) {
-        fprintf(stderr, "duel_evolve: %s: a network with %u inputs and %u outputs, not the duel's %d and %d\n",
-                duel_esc(spec),
-                (unsigned)c->net.n_inputs, (unsigned)c->net.n_outputs, DUEL_N_INPUTS, DUEL_N_OUTPUTS);
+        snprintf(msg, cap, "%s: a network with %u inputs and %u outputs, not the duel's %d and %d", esc,
+                 (unsigned)c->net.n_inputs, (unsigned)c->net.n_outputs, DUEL_N_INPUTS, DUEL_N_OUTPUTS);
         duel_cli_ctrl_close(c);
         return -1;
     }
     c->ctrl.net = &c->net;
     return 0;
+}
+
+static int duel_ctrl_open_in(duel_cli_ctrl *c, const char *spec, int want_world)
+{
+    char msg[4600];
+    if (duel_ctrl_open_msg(c, spec, want_world, msg, sizeof msg) == 0)
+        return 0;
+    fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return -1;
 }
 
 void duel_cli_ctrl_close(duel_cli_ctrl *c)

@@ -71,6 +71,8 @@ int duel_cli_ctrl_open(duel_cli_ctrl *c, const char *spec);
 /* The same for a champion of a run whose world the caller knows (a run's own levels): its origin's world is not
  * looked up (world_from stays NONE), which would read the run's checkpoint for every champion. */
 int duel_cli_ctrl_open_run_champion(duel_cli_ctrl *c, const char *spec);
+/* Either, printing nothing (want_world 1: duel_cli_ctrl_open's): -1 with the line in msg (as duel_read_blob_msg's). */
+int duel_ctrl_open_msg(duel_cli_ctrl *c, const char *spec, int want_world, char *msg, size_t cap);
 
 /* Coevolution checkpoints are a few MB at the paper's scale; a larger file than this is refused. */
 #define DUEL_CKPT_MAX ((size_t)1 << 30)

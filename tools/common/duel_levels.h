@@ -20,5 +20,8 @@ void duel_levels_free(duel_level *levels, uint32_t n);
  * each blob the encoding of the checkpoint's dominant (an edited row, a row the checkpoint lacks, or a champion
  * blob swapped for another is refused, and resume repairs it). 0, or -1 after one line. duel_levels_read calls it. */
 int duel_levels_check(const char *dir, const duel_level *levels, uint32_t n);
+/* The same two, printing nothing: -1 with the line in msg (paths escaped; print it through duel_esc_msg). */
+int duel_levels_read_msg(const char *dir, duel_level **out, uint32_t *n, char *msg, size_t cap);
+int duel_levels_check_msg(const char *dir, const duel_level *levels, uint32_t n, char *msg, size_t cap);
 
 #endif /* DUEL_LEVELS_H */
