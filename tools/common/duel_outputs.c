@@ -159,7 +159,7 @@ static int duel_protected(const char *rout, char dir[PATH_MAX + 1])
 }
 
 /* Whether the directory that would hold path exists (a missing one is reported up front, not after the work). */
-static int duel_parent_ok(const char *cmd, const char *opt, const char *path)
+static int duel_parent_ok(const char *cmd, const char *opt, const char *path, char *msg, size_t cap)
 {
     char dir[PATH_MAX + 1];
     const char *slash = strrchr(path, '/');
@@ -169,12 +169,12 @@ static int duel_parent_ok(const char *cmd, const char *opt, const char *path)
         return 0;
     duel_text_escape(path, ep, sizeof ep);
     if (strlen(path) >= sizeof dir) {
-        fprintf(stderr, "duel_evolve: %s: %s %s: name too long\n", cmd, opt, ep);
+        snprintf(msg, cap, "%s: %s %s: name too long", cmd, opt, ep);
         return 2;
     }
     snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: %s: %s %s: cannot write: %s %s\n", cmd, opt, ep, duel_text_escape(dir, ed, sizeof ed),
+        snprintf(msg, cap, "%s: %s %s: cannot write: %s %s", cmd, opt, ep, duel_text_escape(dir, ed, sizeof ed),
                 stat(dir, &st) != 0 ? "does not exist" : "is not a directory");
         return 2;
     }
@@ -190,7 +190,7 @@ int duel_out_is_duel_lcm(const uint8_t *head, size_t len, const char *path)
 }
 
 static int duel_out_check(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
-                          const char *const *inputs, size_t n_inputs, int own)
+                          const char *const *inputs, size_t n_inputs, int own, char *msg, size_t cap)
 {
     char rout[PATH_MAX + 1], rin[PATH_MAX + 1], rdir[PATH_MAX + 1];
     uint8_t head[DUEL_OUT_HEAD];
@@ -201,33 +201,33 @@ static int duel_out_check(const char *cmd, const char *opt, const char *path, co
     char ep[1100], ei[1100], ed[1100];
     duel_text_escape(path, ep, sizeof ep); /* every name in a message one line, whatever bytes it holds */
     if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: %s: %s %s is a directory: name a file\n", cmd, opt, ep);
+        snprintf(msg, cap, "%s: %s %s is a directory: name a file", cmd, opt, ep);
         return 2;
     }
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
         return 0; /* a pipe or device: written in place (/dev/null twice is fine) */
-    if (!own && duel_parent_ok(cmd, opt, path) != 0)
+    if (!own && duel_parent_ok(cmd, opt, path, msg, cap) != 0)
         return 2; /* (a command's own file is in the run it reads, which it checks first) */
     resolved = duel_resolve(path, rout) == 0;
     for (i = 0; i < n_inputs; i++) {
         if (inputs[i] == NULL)
             continue;
         if (duel_same_path(path, inputs[i])) {
-            fprintf(stderr, "duel_evolve: %s: %s %s is also one of its inputs or outputs (%s): refusing to write over it\n", cmd,
+            snprintf(msg, cap, "%s: %s %s is also one of its inputs or outputs (%s): refusing to write over it", cmd,
                     opt, ep, duel_text_escape(inputs[i], ei, sizeof ei));
             return 2;
         }
         if (resolved && stat(inputs[i], &si) == 0 && S_ISDIR(si.st_mode) && realpath(inputs[i], rin) != NULL &&
             duel_in_run(rout, rin)) {
-            fprintf(stderr, "duel_evolve: %s: %s %s is a file of the run %s it reads: refusing to write over it\n",
+            snprintf(msg, cap, "%s: %s %s is a file of the run %s it reads: refusing to write over it",
                     cmd, opt, ep, duel_text_escape(inputs[i], ei, sizeof ei));
             return 2;
         }
     }
     /* a run's or an experiment's own file is never an output: --force does not lift this */
     if (resolved && !own && duel_protected(rout, rdir)) {
-        fprintf(stderr, "duel_evolve: %s: %s %s is a file of the %s directory %s: refusing to write there "
-                        "(choose a path outside it)\n", cmd, opt, ep, duel_dir_role(rdir) == 2 ? "experiment" : "run",
+        snprintf(msg, cap, "%s: %s %s is a file of the %s directory %s: refusing to write there "
+                        "(choose a path outside it)", cmd, opt, ep, duel_dir_role(rdir) == 2 ? "experiment" : "run",
                 duel_text_escape(rdir, ed, sizeof ed));
         return 2;
     }
@@ -235,7 +235,7 @@ static int duel_out_check(const char *cmd, const char *opt, const char *path, co
         return 0; /* missing (created), empty (nothing to lose), or --force */
     fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-        fprintf(stderr, "duel_evolve: %s: %s %s: cannot read it to see what it is: %s\n", cmd, opt, ep,
+        snprintf(msg, cap, "%s: %s %s: cannot read it to see what it is: %s", cmd, opt, ep,
                 strerror(errno));
         return 2;
     }
@@ -251,19 +251,41 @@ static int duel_out_check(const char *cmd, const char *opt, const char *path, co
     if ((kind->prefix != NULL && got >= strlen(kind->prefix) && memcmp(head, kind->prefix, strlen(kind->prefix)) == 0) ||
         (kind->ours != NULL && kind->ours(head, got, path)))
         return 0;
-    fprintf(stderr, "duel_evolve: %s: %s %s exists and is not %s: refusing to replace it (--force replaces it)\n", cmd,
+    snprintf(msg, cap, "%s: %s %s exists and is not %s: refusing to replace it (--force replaces it)", cmd,
             opt, ep, kind->name);
     return 2;
+}
+
+int duel_out_allowed_msg(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
+                         const char *const *inputs, size_t n_inputs, char *msg, size_t cap)
+{
+    return duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 0, msg, cap);
+}
+
+int duel_out_own_allowed_msg(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind,
+                             int force, const char *const *inputs, size_t n_inputs, char *msg, size_t cap)
+{
+    return duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 1, msg, cap);
+}
+
+/* The commands' checks: the message printed. */
+static int duel_out_print(int r, const char *msg)
+{
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return r;
 }
 
 int duel_out_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
                      const char *const *inputs, size_t n_inputs)
 {
-    return duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 0);
+    char msg[4600];
+    return duel_out_print(duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 0, msg, sizeof msg), msg);
 }
 
 int duel_out_own_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
                          const char *const *inputs, size_t n_inputs)
 {
-    return duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 1);
+    char msg[4600];
+    return duel_out_print(duel_out_check(cmd, opt, path, kind, force, inputs, n_inputs, 1, msg, sizeof msg), msg);
 }

@@ -44,6 +44,11 @@ int duel_out_allowed(const char *cmd, const char *opt, const char *path, const d
  * RUN/ladder.csv): the run-file rule above is not applied. */
 int duel_out_own_allowed(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
                          const char *const *inputs, size_t n_inputs);
+/* The same two, printing nothing: 2 with the line in msg (names escaped; print it through duel_esc_msg). */
+int duel_out_allowed_msg(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind, int force,
+                         const char *const *inputs, size_t n_inputs, char *msg, size_t cap);
+int duel_out_own_allowed_msg(const char *cmd, const char *opt, const char *path, const duel_out_kind *kind,
+                             int force, const char *const *inputs, size_t n_inputs, char *msg, size_t cap);
 
 /* 1 when a and b name the same file (both existing: the same inode; else
  * the same resolved directory and name). */
