@@ -32,7 +32,8 @@ import sys
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Iterator, NoReturn, Union
 
-from ._core import Coevolution, DuelConfig, Genome, Network, RunEngine, read_dominance, read_generations, run_command
+from ._core import (Coevolution, DuelConfig, Genome, Network, RunEngine, ladder_json, read_dominance, read_generations,
+                    run_command)
 from .errors import NeatError
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -451,18 +452,18 @@ def ladder(
     levels: tuple[int, int] | None = None,
     against: Iterable[str] = (),
 ) -> dict[str, Any]:
-    """duel_evolve ladder DIR --json: every dominant (or the top one, or levels L1..L2) against the built-in
-    strategies (or those named in against), 288 games each. The command's JSON as a dict: run, world, games,
-    against, levels (each with results per strategy, total_wins, total_losses)."""
-    args = [os.fspath(directory), "--json"]
-    if top:
-        args.append("--top")
-    if levels is not None:
-        args += ["--levels", f"{levels[0]}-{levels[1]}"]
-    names = list(against)
-    if names:
-        args += ["--against", ",".join(names)]
-    result: dict[str, Any] = json.loads(_call("ladder", args, os.fspath(directory), keep_stdout=True))
+    """duel_evolve ladder DIR --json, by the command's own library (the same games, JSON and DIR/ladder.csv): every
+    dominant (or the top one, or levels L1..L2) against the built-in strategies (or those named in against), 288
+    games each. The command's JSON as a dict: run, world, games, against, levels (each with results per strategy,
+    total_wins, total_losses). RunError with the command's message when it refuses or fails."""
+    lo, hi = levels if levels is not None else (0, 0)
+    if levels is not None and (lo < 1 or hi < lo):
+        raise RunError(f"ladder: --levels takes L or L1-L2 (levels from 1), not '{lo}-{hi}'", 2,
+                       os.fspath(directory))
+    status, text, message = ladder_json(os.fspath(directory), top, lo, hi, list(against))
+    if status != 0:
+        raise RunError(message, status, os.fspath(directory))
+    result: dict[str, Any] = json.loads(text)
     return result
 
 

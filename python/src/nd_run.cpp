@@ -1,5 +1,6 @@
 // nd_run.cpp - duel_evolve's ladder, compare and export called in this process (tools/cli/, the very code of the
 // commands), and a run directory's records read back by the C readers. (A run is the run engine: nd_engine.cpp.)
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -15,7 +16,10 @@
 #include "nd.h"
 extern "C" {
 #include "duel_cli.h"
+#include "duel_ctrl.h"
 #include "duel_dominance.h"
+#include "duel_files.h"
+#include "duel_ladder_games.h"
 #include "duel_generations.h"
 }
 
@@ -37,11 +41,11 @@ static std::tuple<int, std::string, std::string> nd_duel_evolve(const std::strin
                                                                 const std::vector<std::string> &args, bool keep_stdout)
 {
     int (*cmd)(int, char **) = command == "export"   ? duel_cmd_export
-                               : command == "ladder" ? duel_cmd_ladder
                                : command == "compare" ? duel_cmd_compare
                                                      : nullptr;
     if (cmd == nullptr)
-        throw nd_error(NEAT_E_ARG, "command: 'ladder', 'compare' or 'export' (a run is neat_duel.runs.Run)");
+        throw nd_error(NEAT_E_ARG, "command: 'compare' or 'export' (a run is neat_duel.runs.Run, a ladder "
+                                   "neat_duel.runs.ladder)");
     // the commands' output goes to fds 1 and 2, redirected here for the call: one at a time in a process
     static std::mutex one;
     std::unique_lock<std::mutex> held(one, std::try_to_lock);
@@ -108,6 +112,81 @@ static std::tuple<int, std::string, std::string> nd_duel_evolve(const std::strin
     return {rc, stdout_text, text};
 }
 
+// duel_evolve ladder DIR [--top | --levels LO-HI] [--against NAMES] --json, by the command's own library
+// (duel_ladder_games.c): (status, JSON, message). A whole ladder replaces DIR/ladder.csv, as the command's does.
+static std::tuple<int, std::string, std::string> nd_ladder(const nd_path &dirp, bool top, uint32_t lo, uint32_t hi,
+                                                           const std::vector<std::string> &against)
+{
+    const std::string dir = dirp.string();
+    char msg[4600], path[4200];
+    int ids[DUEL_N_BUILTINS];
+    uint32_t n = 0;
+    int subset = lo != 0;
+    if (top && lo != 0)
+        return {2, "", "ladder: --top and --levels name the levels twice: give one"};
+    if (lo != 0 && (lo < 1 || hi < lo || hi > 1000000))
+        return {2, "", "ladder: --levels takes L or L1-L2 (levels from 1), not '" + std::to_string(lo) + "-" +
+                           std::to_string(hi) + "'"};
+    for (const std::string &name : against) {
+        int b = duel_builtin_parse(name.c_str());
+        bool again = false;
+        for (uint32_t k = 0; k < n; k++)
+            again = again || ids[k] == b;
+        if (b < 0 || again || n == DUEL_N_BUILTINS)
+            return {2, "", "ladder: --against takes built-in strategies separated by commas, each once (idle, "
+                           "spinner, forager, hunter, forager-hunter), not '" + name + "'"};
+        subset |= b != (int)n; // another set or order is another table
+        ids[n++] = b;
+    }
+    if (n == 0)
+        for (; n < DUEL_N_BUILTINS; n++)
+            ids[n] = (int)n;
+    subset |= n != DUEL_N_BUILTINS;
+    duel_rules world;
+    duel_ladder L;
+    int e;
+    char *json = nullptr, *csv = nullptr;
+    size_t json_len = 0, csv_len = 0;
+    {
+        nb::gil_scoped_release nogil;
+        e = duel_run_world_msg(dir.c_str(), &world, msg, sizeof msg) != 0 ? 2 : 0;
+        snprintf(path, sizeof path, "%s/ladder.csv", dir.c_str());
+        const char *in[1] = {dir.c_str()};
+        if (e == 0 && !subset &&
+            duel_out_own_allowed_msg("ladder", "its", path, &duel_ladder_csv_kind, 0, in, 1, msg, sizeof msg) != 0)
+            e = 2;
+        if (e == 0)
+            e = duel_ladder_play(&L, dir.c_str(), &world, top, lo, hi, ids, n, 0, msg, sizeof msg);
+        else
+            std::memset(&L, 0, sizeof L);
+        FILE *fj = e == 0 ? open_memstream(&json, &json_len) : nullptr;
+        FILE *fc = e == 0 ? open_memstream(&csv, &csv_len) : nullptr;
+        if (e == 0 && (fj == nullptr || fc == nullptr)) {
+            std::snprintf(msg, sizeof msg, "ladder: out of memory");
+            e = 1;
+        }
+        if (e == 0) {
+            duel_ladder_write_json(fj, &L);
+            duel_ladder_write_csv(fc, &L);
+        }
+        if (fj != nullptr)
+            std::fclose(fj);
+        if (fc != nullptr)
+            std::fclose(fc);
+        duel_ladder_free(&L);
+        if (e == 0 && !subset && duel_file_replace(path, csv, csv_len) != 0) {
+            std::snprintf(msg, sizeof msg, "%s: cannot write: %s", path, std::strerror(errno));
+            e = 1;
+        }
+    }
+    std::string out = json != nullptr ? std::string(json, json_len) : std::string();
+    std::free(json);
+    std::free(csv);
+    if (e != 0)
+        return {e, "", msg};
+    return {0, out, ""};
+}
+
 static nb::list nd_dominance(const std::string &dir)
 {
     duel_dominance_row *rows = nullptr;
@@ -165,8 +244,11 @@ static nb::list nd_generations(const std::string &dir)
 void nd_bind_run(nb::module_ &m)
 {
     m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"), nb::arg("keep_stdout") = false,
-          "duel_evolve COMMAND ARGS (ladder, compare, export) in this process: (exit status, what it wrote\n"
+          "duel_evolve COMMAND ARGS (compare, export) in this process: (exit status, what it wrote\n"
           "to stdout when keep_stdout, else '', what it wrote to stderr).");
+    m.def("ladder_json", &nd_ladder, nb::arg("directory"), nb::arg("top") = false, nb::arg("lo") = 0,
+          nb::arg("hi") = 0, nb::arg("against") = std::vector<std::string>(),
+          "duel_evolve ladder DIRECTORY --json by the command's library: (status, JSON text, message).");
     m.def("read_dominance", &nd_dominance, nb::arg("directory"),
           nb::sig("def read_dominance(directory: str) -> list[dict[str, typing.Any]]"),
           "A run directory's dominance.csv, read and checked by duel_evolve's reader.");

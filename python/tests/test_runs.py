@@ -67,8 +67,14 @@ def test_ladder_and_compare_are_the_commands(tmp_path: pathlib.Path) -> None:
     a = runs.run(SMALL, tmp_path / "a", generations=4)
     b = runs.run(SMALL, tmp_path / "b", generations=4, seed=9)
     lad = runs.ladder(a.path)
+    from_python = (a.path / "ladder.csv").read_bytes()
     cli = subprocess.run([str(duel), "ladder", str(a.path), "--json"], capture_output=True, text=True, check=True)
     assert lad == json.loads(cli.stdout)
+    assert from_python == (a.path / "ladder.csv").read_bytes()  # the same RUN/ladder.csv, the command's
+    with pytest.raises(runs.RunError, match="--top and --levels name the levels twice"):
+        runs.ladder(a.path, top=True, levels=(1, 1))
+    with pytest.raises(runs.RunError, match="each once"):
+        runs.ladder(a.path, against=["idle", "idle"])
     assert [lv["level"] for lv in lad["levels"]] == [d["level"] for d in a.dominants()]
     top = runs.ladder(a.path, top=True, against=["forager-hunter"])
     assert len(top["levels"]) == 1 and top["against"] == ["forager-hunter"]

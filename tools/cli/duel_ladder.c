@@ -7,10 +7,8 @@
 #include "duel_cli.h"
 #include "duel_text.h"
 #include "duel_files.h"
-#include "duel_json.h"
+#include "duel_ladder_games.h"
 #include "duel_outputs.h"
-#include "duel_levels.h"
-#include "duel_pairs.h"
 #include "duel_world_cfg.h"
 
 #define DUEL_LADDER_USAGE                                                                                          \
@@ -132,169 +130,55 @@ static int duel_ladder_parse(int argc, char **argv, duel_ladder_opts *o)
         return -1;
     /* before any game: an output that is not a ladder is refused now, not after the work */
     if (o->csv != NULL || !o->subset) {
-        static const duel_out_kind kind = {"a ladder CSV", "level,generation,population,hidden,connections,", NULL};
+        const duel_out_kind *kind = &duel_ladder_csv_kind;
         char path[4200];
         const char *in[1];
         in[0] = o->dir;
         snprintf(path, sizeof path, "%s/ladder.csv", o->dir);
-        if (o->csv != NULL ? duel_out_allowed("ladder", "--csv", o->csv, &kind, o->force, in, 1) != 0
-                           : duel_out_own_allowed("ladder", "its", path, &kind, o->force, in, 1) != 0)
+        if (o->csv != NULL ? duel_out_allowed("ladder", "--csv", o->csv, kind, o->force, in, 1) != 0
+                           : duel_out_own_allowed("ladder", "its", path, kind, o->force, in, 1) != 0)
             return -1;
     }
     return 0;
 }
 
-/* The CSV: level, generation, population, hidden, connections, NAME_wins, NAME_losses per strategy, totals,
- * then the world the games were played in and the dominant's network step (issue 49: a file that leaves its run
- * still says what it was measured in). */
-static void duel_ladder_csv(FILE *f, const duel_ladder_opts *o, const duel_level *lv, uint32_t first, uint32_t end,
-                            const duel_pair *pairs)
-{
-    uint32_t k, b;
-    char w[40];
-    duel_world_label(&o->world, w, sizeof w);
-    fprintf(f, "level,generation,population,hidden,connections");
-    for (b = 0; b < o->n_against; b++)
-        fprintf(f, ",%s_wins,%s_losses", duel_builtin_name(o->against[b]), duel_builtin_name(o->against[b]));
-    fprintf(f, ",total_wins,total_losses,world,step\n");
-    for (k = first; k < end; k++) {
-        uint32_t tw = 0, tl = 0;
-        fprintf(f, "%u,%u,%s,%u,%u", lv[k].level, lv[k].generation, lv[k].pop, lv[k].hidden, lv[k].conns);
-        for (b = 0; b < o->n_against; b++) {
-            const duel_tally *t = &pairs[(k - first) * o->n_against + b].tally;
-            fprintf(f, ",%u,%u", t->wins_a, t->wins_b);
-            tw += t->wins_a;
-            tl += t->wins_b;
-        }
-        fprintf(f, ",%u,%u,%s,%s\n", tw, tl, w, duel_origin_step_text(&lv[k].ctrl.origin));
-    }
-}
-
-static void duel_ladder_table(const duel_ladder_opts *o, const duel_level *lv, uint32_t first, uint32_t end,
-                              const duel_pair *pairs)
-{
-    uint32_t k, b;
-    printf("%-5s %-5s %-3s %-6s %-5s", "level", "gen", "pop", "hidden", "conns");
-    for (b = 0; b < o->n_against; b++)
-        printf(" %15s", duel_builtin_name(o->against[b]));
-    printf(" %11s\n", "total");
-    for (k = first; k < end; k++) {
-        uint32_t tw = 0, tl = 0;
-        printf("%-5u %-5u %-3s %-6u %-5u", lv[k].level, lv[k].generation, lv[k].pop, lv[k].hidden, lv[k].conns);
-        for (b = 0; b < o->n_against; b++) {
-            const duel_tally *t = &pairs[(k - first) * o->n_against + b].tally;
-            printf(" %7u:%-7u", t->wins_a, t->wins_b);
-            tw += t->wins_a;
-            tl += t->wins_b;
-        }
-        printf(" %5u:%-5u\n", tw, tl);
-    }
-    {
-        char w[40];
-        printf("wins:losses of %u games against each built-in strategy (draws and timeouts are neither), world %s, "
-               "network step %s\n", 2u * DUEL_CONFIGS, duel_world_label(&o->world, w, sizeof w),
-               end > first ? duel_origin_step_text(&lv[first].ctrl.origin) : "none");
-    }
-}
-
-/* docs/tools.md, "ladder --json" */
-static void duel_ladder_json(const duel_ladder_opts *o, const duel_level *lv, uint32_t first, uint32_t end,
-                             const duel_pair *pairs)
-{
-    uint32_t k, b;
-    char w[40];
-    printf("{\"run\":");
-    duel_json_str(stdout, o->dir);
-    printf(",\"world\":\"%s\",\"world_id\":\"%016llx\",\"step\":\"%s\",\"games\":%u,\"against\":[",
-           duel_world_label(&o->world, w, sizeof w), (unsigned long long)duel_rules_id(&o->world),
-           end > first ? duel_origin_step_text(&lv[first].ctrl.origin) : "none", 2u * DUEL_CONFIGS);
-    for (b = 0; b < o->n_against; b++)
-        printf("%s\"%s\"", b ? "," : "", duel_builtin_name(o->against[b]));
-    printf("],\"levels\":[");
-    for (k = first; k < end; k++) {
-        uint32_t tw = 0, tl = 0;
-        printf("%s{\"level\":%u,\"generation\":%u,\"population\":\"%s\",\"hidden\":%u,\"connections\":%u,"
-               "\"results\":{", k > first ? "," : "", lv[k].level, lv[k].generation, lv[k].pop, lv[k].hidden,
-               lv[k].conns);
-        for (b = 0; b < o->n_against; b++) {
-            const duel_tally *t = &pairs[(k - first) * o->n_against + b].tally;
-            printf("%s\"%s\":{\"wins\":%u,\"losses\":%u,\"draws\":%u,\"timeouts\":%u}", b ? "," : "",
-                   duel_builtin_name(o->against[b]), t->wins_a, t->wins_b, t->draws, t->timeouts);
-            tw += t->wins_a;
-            tl += t->wins_b;
-        }
-        printf("},\"total_wins\":%u,\"total_losses\":%u}", tw, tl);
-    }
-    printf("]}\n");
-}
-
 int duel_cmd_ladder(int argc, char **argv)
 {
     duel_ladder_opts o;
-    duel_level *levels;
-    duel_cli_ctrl builtins[DUEL_N_BUILTINS];
-    duel_pair *pairs;
-    uint32_t n, k, first, end, b;
-    char path[4200], *text = NULL;
+    duel_ladder L;
+    char path[4200], msg[4600], *text = NULL;
     size_t len = 0;
     FILE *mem;
-    int err;
+    int e;
 
     if (duel_ladder_parse(argc, argv, &o) != 0)
         return 2;
-    if (duel_levels_read(o.dir, &levels, &n) != 0)
-        return 2;
-    /* --top: the highest dominant alone (what an experiment's report needs); --levels: a range */
-    first = o.top ? n - 1 : (o.lo ? o.lo - 1 : 0);
-    end = o.lo ? o.hi : n;
-    if (o.lo && o.hi > n) {
-        fprintf(stderr, "duel_evolve: ladder: %s has %u dominance level%s, not %u\n", o.dir, n, n == 1 ? "" : "s",
-                o.hi);
-        duel_levels_free(levels, n);
-        return 2;
-    }
-    /* one comparison per (level, strategy) */
-    memset(builtins, 0, sizeof builtins);
-    for (b = 0; b < o.n_against; b++)
-        builtins[b].ctrl.builtin = o.against[b];
-    pairs = (duel_pair *)calloc((size_t)(end - first) * o.n_against, sizeof *pairs);
-    if (pairs == NULL) {
-        fprintf(stderr, "duel_evolve: ladder: out of memory\n");
-        duel_levels_free(levels, n);
-        return 1;
-    }
-    for (k = 0; k < (end - first) * o.n_against; k++) {
-        pairs[k].a = &levels[first + k / o.n_against].ctrl;
-        pairs[k].b = &builtins[k % o.n_against];
-    }
-    err = duel_pairs_play(&o.world, pairs, (size_t)(end - first) * o.n_against, 0, NULL, NULL);
-    mem = err ? NULL : open_memstream(&text, &len);
+    e = duel_ladder_play(&L, o.dir, &o.world, o.top, o.lo, o.hi, o.against, o.n_against, 0, msg, sizeof msg);
+    mem = e ? NULL : open_memstream(&text, &len);
     if (mem == NULL) {
-        fprintf(stderr, "duel_evolve: ladder: %s\n", err ? "a comparison failed" : "out of memory");
-        free(pairs);
-        duel_levels_free(levels, n);
-        return 1;
+        fprintf(stderr, "duel_evolve: %s\n", e ? duel_esc_msg(msg) : "ladder: out of memory");
+        duel_ladder_free(&L);
+        return e ? e : 1;
     }
-    duel_ladder_csv(mem, &o, levels, first, end, pairs);
+    duel_ladder_write_csv(mem, &L);
     fclose(mem);
     if (o.json)
-        duel_ladder_json(&o, levels, first, end, pairs);
+        duel_ladder_write_json(stdout, &L);
     else
-        duel_ladder_table(&o, levels, first, end, pairs);
-    free(pairs);
-    duel_levels_free(levels, n);
+        duel_ladder_write_table(stdout, &L);
+    duel_ladder_free(&L);
     /* DIR/ladder.csv holds the whole ladder (or --top's row, as an experiment keeps it): a part of it only
      * where --csv says */
-    k = 0;
+    e = 0;
     if (o.csv != NULL || !o.subset) {
         if (o.csv != NULL)
             snprintf(path, sizeof path, "%s", o.csv);
         else
             snprintf(path, sizeof path, "%s/ladder.csv", o.dir);
-        k = duel_file_replace(path, text, len) != 0;
-        if (k)
+        e = duel_file_replace(path, text, len) != 0;
+        if (e)
             fprintf(stderr, "duel_evolve: %s: cannot write: %s\n", duel_esc(path), strerror(errno));
     }
     free(text);
-    return k ? 1 : 0;
+    return e ? 1 : 0;
 }
