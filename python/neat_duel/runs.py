@@ -27,13 +27,12 @@ import io
 import os
 import pathlib
 import shutil
-import tempfile
 import sys
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Iterator, NoReturn, Union
 
-from ._core import (Coevolution, DuelConfig, Genome, Network, RunEngine, ladder_json, read_dominance, read_generations,
-                    run_command)
+from ._core import (Coevolution, DuelConfig, Genome, Network, RunEngine, compare_json, ladder_json, read_dominance,
+                    read_generations, run_command)
 from .errors import NeatError
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -474,23 +473,18 @@ def compare(
     threads: int | None = None,
     cache: PathLike | None = None,
 ) -> dict[str, Any]:
-    """duel_evolve compare RUN... --against RUN...: the paper's performance measure, each candidate's top dominant
-    against every dominant of every ranking run (its comparisons cached as the command caches them). The
-    command's JSON summary and pairs as a dict."""
+    """duel_evolve compare RUN... --against RUN... --json, by the command's own library: the paper's performance
+    measure, each candidate's top dominant against every dominant of every ranking run (its comparisons cached as
+    the command caches them). The command's JSON summary and pairs as a dict; RunError with its message when it
+    refuses or fails. One comparison at a time in a process (StateError for a second at once)."""
     cand = [os.fspath(c) for c in candidates]
     rank = [os.fspath(a) for a in against]
     if not cand or not rank:
         raise ValueError("compare: at least one candidate and one ranking run")
-    with tempfile.TemporaryDirectory() as d:
-        out = os.path.join(d, "compare.json")
-        args = cand + ["--against"] + rank + ["--json", out]
-        if threads is not None:
-            args += ["--threads", str(threads)]
-        if cache is not None:
-            args += ["--cache", os.fspath(cache)]
-        _call("compare", args, cand[0], keep_stdout=True)
-        with open(out) as f:
-            result: dict[str, Any] = json.load(f)
+    status, text, message = compare_json(cand, rank, threads or 0, os.fspath(cache) if cache is not None else "")
+    if status != 0:
+        raise RunError(message, status, cand[0])
+    result: dict[str, Any] = json.loads(text)
     return result
 
 

@@ -20,6 +20,8 @@ extern "C" {
 #include "duel_dominance.h"
 #include "duel_files.h"
 #include "duel_ladder_games.h"
+#include "duel_outputs.h"
+#include "duel_perf.h"
 #include "duel_generations.h"
 }
 
@@ -40,12 +42,10 @@ static std::string nd_take(FILE *f)
 static std::tuple<int, std::string, std::string> nd_duel_evolve(const std::string &command,
                                                                 const std::vector<std::string> &args, bool keep_stdout)
 {
-    int (*cmd)(int, char **) = command == "export"   ? duel_cmd_export
-                               : command == "compare" ? duel_cmd_compare
-                                                     : nullptr;
+    int (*cmd)(int, char **) = command == "export" ? duel_cmd_export : nullptr;
     if (cmd == nullptr)
-        throw nd_error(NEAT_E_ARG, "command: 'compare' or 'export' (a run is neat_duel.runs.Run, a ladder "
-                                   "neat_duel.runs.ladder)");
+        throw nd_error(NEAT_E_ARG, "command: 'export' (a run is neat_duel.runs.Run; ladder and compare are "
+                                   "neat_duel.runs.ladder and .compare)");
     // the commands' output goes to fds 1 and 2, redirected here for the call: one at a time in a process
     static std::mutex one;
     std::unique_lock<std::mutex> held(one, std::try_to_lock);
@@ -187,6 +187,64 @@ static std::tuple<int, std::string, std::string> nd_ladder(const nd_path &dirp, 
     return {0, out, ""};
 }
 
+// duel_evolve compare CANDIDATES --against RANKINGS [--threads T] [--cache FILE] --json, by the measure's library
+// (duel_perf.c, the command's own): (status, JSON, message). The measure's lines go to one process-wide place for
+// the call: one comparison at a time in a process.
+static std::tuple<int, std::string, std::string> nd_compare(const std::vector<std::string> &cand,
+                                                            const std::vector<std::string> &against, uint32_t threads,
+                                                            const std::string &cache)
+{
+    static std::mutex one;
+    std::unique_lock<std::mutex> held(one, std::try_to_lock);
+    if (!held.owns_lock())
+        throw nd_error(NEAT_E_STATE, "compare: another comparison runs in this process (one at a time)");
+    std::vector<const char *> c, a, in;
+    for (const std::string &x : cand)
+        c.push_back(x.c_str());
+    for (const std::string &x : against)
+        a.push_back(x.c_str());
+    in = c;
+    in.insert(in.end(), a.begin(), a.end());
+    char msg[8400];
+    char *json = nullptr;
+    size_t len = 0;
+    duel_perf m;
+    duel_perf_opts o;
+    int rc;
+    std::memset(&m, 0, sizeof m);
+    std::memset(&o, 0, sizeof o);
+    o.threads = threads;
+    o.cache_path = cache.empty() ? nullptr : cache.c_str();
+    o.mode = DUEL_PERF_PLAY;
+    o.prefix = "compare: ";
+    o.msg = msg;
+    o.msg_cap = sizeof msg;
+    {
+        nb::gil_scoped_release nogil;
+        // before any game: a cache file that is not a compare cache (or one of the runs) is refused
+        rc = o.cache_path != nullptr ? duel_out_allowed_msg("compare", "--cache", o.cache_path, &duel_perf_cache_kind, 0,
+                                                            in.data(), in.size(), msg, sizeof msg)
+                                     : 0;
+        if (rc == 0)
+            rc = duel_perf_measure(&m, c.data(), (uint32_t)c.size(), a.data(), (uint32_t)a.size(), &o);
+        FILE *f = rc == 0 ? open_memstream(&json, &len) : nullptr;
+        if (rc == 0 && f == nullptr) {
+            std::snprintf(msg, sizeof msg, "compare: out of memory");
+            rc = 1;
+        }
+        if (f != nullptr) {
+            duel_perf_write_json(f, &m);
+            std::fclose(f);
+        }
+        duel_perf_free(&m);
+    }
+    std::string out = json != nullptr ? std::string(json, len) : std::string();
+    std::free(json);
+    if (rc != 0)
+        return {rc, "", msg};
+    return {0, out, ""};
+}
+
 static nb::list nd_dominance(const std::string &dir)
 {
     duel_dominance_row *rows = nullptr;
@@ -244,11 +302,15 @@ static nb::list nd_generations(const std::string &dir)
 void nd_bind_run(nb::module_ &m)
 {
     m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"), nb::arg("keep_stdout") = false,
-          "duel_evolve COMMAND ARGS (compare, export) in this process: (exit status, what it wrote\n"
+          "duel_evolve COMMAND ARGS (export) in this process: (exit status, what it wrote\n"
           "to stdout when keep_stdout, else '', what it wrote to stderr).");
     m.def("ladder_json", &nd_ladder, nb::arg("directory"), nb::arg("top") = false, nb::arg("lo") = 0,
           nb::arg("hi") = 0, nb::arg("against") = std::vector<std::string>(),
           "duel_evolve ladder DIRECTORY --json by the command's library: (status, JSON text, message).");
+    m.def("compare_json", &nd_compare, nb::arg("candidates"), nb::arg("against"), nb::arg("threads") = 0,
+          nb::arg("cache") = "",
+          "duel_evolve compare CANDIDATES --against RANKINGS --json by the measure's library: (status, JSON text,\n"
+          "message).");
     m.def("read_dominance", &nd_dominance, nb::arg("directory"),
           nb::sig("def read_dominance(directory: str) -> list[dict[str, typing.Any]]"),
           "A run directory's dominance.csv, read and checked by duel_evolve's reader.");

@@ -87,6 +87,9 @@ def test_ladder_and_compare_are_the_commands(tmp_path: pathlib.Path) -> None:
         runs.ladder(tmp_path / "none")
     with pytest.raises(ValueError):
         runs.compare([], [b.path])
+    with pytest.raises(runs.RunError, match="^compare: .*none") as e:  # the measure's own line, nothing printed
+        runs.compare([tmp_path / "none"], [b.path])
+    assert e.value.status == 2
 
 
 def test_two_runs_in_two_threads(tmp_path: pathlib.Path) -> None:

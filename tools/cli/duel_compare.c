@@ -19,101 +19,7 @@
 #include "duel_text.h"
 #include "duel_world_cfg.h"
 
-typedef struct duel_cmp_stats {
-    double mean, sd;
-} duel_cmp_stats;
-
 #define DUEL_CMP_USAGE "usage: duel_evolve compare RUN... --against RUN... [--threads T] [--json FILE] [--csv FILE] [--cache FILE] [--force]"
-
-/* mean and sample standard deviation (0 for one value) */
-static duel_cmp_stats duel_cmp_stat(const double *v, size_t n)
-{
-    duel_cmp_stats s = {0.0, 0.0};
-    size_t k;
-    for (k = 0; k < n; k++)
-        s.mean += v[k] / (double)n;
-    for (k = 0; n > 1 && k < n; k++)
-        s.sd += (v[k] - s.mean) * (v[k] - s.mean) / (double)(n - 1);
-    s.sd = sqrt(s.sd);
-    return s;
-}
-
-static void duel_cmp_write_csv(FILE *f, const void *ctx)
-{
-    const duel_perf *m = (const duel_perf *)ctx;
-    uint32_t k, l;
-    char w[40];
-    duel_world_label(&m->world, w, sizeof w);
-    fprintf(f, "candidate,candidate_level,candidate_generation,ranking,ranking_levels,highest_level,"
-               "highest_generation,highest_performance,contiguous_level,contiguous_generation,contiguous_performance,"
-               "wins,world,candidate_step,ranking_step\n");
-    for (k = 0; k < m->n_pairs; k++) {
-        const duel_perf_pair *p = &m->pairs[k];
-        const duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
-        duel_csv_field(f, c->dir);
-        fprintf(f, ",%u,%u,", c->n_levels, c->levels[c->n_levels - 1].generation);
-        duel_csv_field(f, r->dir);
-        fprintf(f, ",%u,%u,%.0f,%.6f,%u,%.0f,%.6f,", r->n_levels, p->highest,
-                duel_perf_gen(m, p, p->highest), duel_perf_level_share(m, p, p->highest), p->contiguous,
-                duel_perf_gen(m, p, p->contiguous), duel_perf_level_share(m, p, p->contiguous));
-        for (l = 0; l < r->n_levels; l++)
-            fprintf(f, "%s%u:%u", l ? " " : "", p->t[l].wins_a, p->t[l].wins_b);
-        fprintf(f, ",%s,%s,%s\n", w, duel_step_name(c->net_step), duel_step_name(r->net_step));
-    }
-}
-
-static void duel_cmp_json_stats(FILE *f, const char *name, const double *perf, const double *gen, uint32_t n,
-                                const double *pair_perf, uint32_t n_pairs)
-{
-    duel_cmp_stats sp = duel_cmp_stat(perf, n), sg = duel_cmp_stat(gen, n), pp = duel_cmp_stat(pair_perf, n_pairs);
-    fprintf(f, "\"%s\": {\"performance_mean\": %.6f, \"performance_sd\": %.6f, \"equivalent_generation_mean\": %.3f, "
-               "\"equivalent_generation_sd\": %.3f, \"pairs_performance_mean\": %.6f, \"pairs_performance_sd\": %.6f}",
-            name, sp.mean, sp.sd, sg.mean, sg.sd, pp.mean, pp.sd);
-}
-
-static void duel_cmp_write_json(FILE *f, const void *ctx)
-{
-    const duel_perf *m = (const duel_perf *)ctx;
-    uint32_t i, k, l, at = 0;
-    char w[40];
-    fprintf(f, "{\n  \"games_per_comparison\": %d,\n  \"world\": \"%s\",\n  \"world_id\": \"%016llx\",\n  \"runs\": %u,\n  "
-               "\"summary\": {", 2 * DUEL_CONFIGS, duel_world_label(&m->world, w, sizeof w),
-            (unsigned long long)duel_rules_id(&m->world), m->n_cand);
-    duel_cmp_json_stats(f, "highest", m->perf_hi, m->gen_hi, m->n_cand, m->pair_hi, m->n_pairs);
-    fprintf(f, ", ");
-    duel_cmp_json_stats(f, "contiguous", m->perf_co, m->gen_co, m->n_cand, m->pair_co, m->n_pairs);
-    fprintf(f, "},\n  \"candidates\": [\n");
-    for (i = 0; i < m->n_cand; i++) {
-        const duel_perf_run *c = &m->runs[i];
-        fprintf(f, "    {\"run\": ");
-        duel_json_str(f, c->dir);
-        fprintf(f, ", \"levels\": %u, \"generation\": %u, \"hidden\": %u, \"connections\": %u, "
-                   "\"highest\": {\"performance\": %.6f, \"equivalent_generation\": %.3f}, "
-                   "\"contiguous\": {\"performance\": %.6f, \"equivalent_generation\": %.3f}, \"step\": \"%s\", "
-                   "\"rankings\": [\n",
-                c->n_levels, c->levels[c->n_levels - 1].generation, c->levels[c->n_levels - 1].hidden,
-                c->levels[c->n_levels - 1].conns, m->perf_hi[i], m->gen_hi[i], m->perf_co[i], m->gen_co[i],
-                duel_step_name(c->net_step));
-        for (k = 0; at < m->n_pairs && m->pairs[at].cand == i; at++, k++) {
-            const duel_perf_pair *p = &m->pairs[at];
-            const duel_perf_run *r = &m->runs[p->rank];
-            fprintf(f, "%s      {\"run\": ", k ? ",\n" : "");
-            duel_json_str(f, r->dir);
-            fprintf(f, ", \"levels\": %u, \"highest_level\": %u, \"highest_generation\": %.0f, "
-                       "\"contiguous_level\": %u, \"contiguous_generation\": %.0f, \"wins\": [",
-                    r->n_levels, p->highest, duel_perf_gen(m, p, p->highest), p->contiguous,
-                    duel_perf_gen(m, p, p->contiguous));
-            for (l = 0; l < r->n_levels; l++)
-                fprintf(f, "%s%u", l ? ", " : "", p->t[l].wins_a);
-            fprintf(f, "], \"losses\": [");
-            for (l = 0; l < r->n_levels; l++)
-                fprintf(f, "%s%u", l ? ", " : "", p->t[l].wins_b);
-            fprintf(f, "]}");
-        }
-        fprintf(f, "\n    ]}%s\n", i + 1 < m->n_cand ? "," : "");
-    }
-    fprintf(f, "  ]\n}\n");
-}
 
 static void duel_cmp_print(const duel_perf *m)
 {
@@ -201,9 +107,6 @@ int duel_cmd_compare(int argc, char **argv)
     }
     /* before any game: outputs that would replace an input or a file that is not this command's are refused */
     {
-        static const duel_out_kind csv_kind = {"a compare CSV", "candidate,candidate_level,", NULL};
-        static const duel_out_kind json_kind = {"a compare JSON file", "{\n  \"games_per_comparison\"", NULL};
-        static const duel_out_kind cache_kind = {"a compare cache", NULL, duel_cmp_cache_is};
         const char **in = (const char **)calloc((size_t)n_cand + n_against + 3, sizeof *in);
         uint32_t n_in = 0;
         int bad;
@@ -217,12 +120,12 @@ int duel_cmd_compare(int argc, char **argv)
             in[n_in++] = against[i];
         in[n_in] = json;
         in[n_in + 1] = cache_path;
-        bad = csv != NULL && duel_out_allowed("compare", "--csv", csv, &csv_kind, force, in, n_in + 2) != 0;
+        bad = csv != NULL && duel_out_allowed("compare", "--csv", csv, &duel_perf_csv_kind, force, in, n_in + 2) != 0;
         in[n_in] = csv;
-        bad = bad || (json != NULL && duel_out_allowed("compare", "--json", json, &json_kind, force, in, n_in + 2) != 0);
+        bad = bad || (json != NULL && duel_out_allowed("compare", "--json", json, &duel_perf_json_kind, force, in, n_in + 2) != 0);
         in[n_in + 1] = json;
         bad = bad || (cache_path != NULL &&
-                      duel_out_allowed("compare", "--cache", cache_path, &cache_kind, force, in, n_in + 2) != 0);
+                      duel_out_allowed("compare", "--cache", cache_path, &duel_perf_cache_kind, force, in, n_in + 2) != 0);
         free(in);
         if (bad)
             goto out;
@@ -238,9 +141,9 @@ int duel_cmd_compare(int argc, char **argv)
     if (rc != 0)
         goto out;
     rc = 0;
-    if (csv != NULL && duel_file_write_with(csv, duel_cmp_write_csv, &m) != 0)
+    if (csv != NULL && duel_file_write_with(csv, duel_perf_write_csv, &m) != 0)
         rc = 1;
-    if (json != NULL && duel_file_write_with(json, duel_cmp_write_json, &m) != 0)
+    if (json != NULL && duel_file_write_with(json, duel_perf_write_json, &m) != 0)
         rc = 1;
     duel_cmp_print(&m);
 out:

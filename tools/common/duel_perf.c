@@ -1,6 +1,8 @@
 /* duel_perf.c - the paper's performance measure: candidates' highest dominants against other runs' dominance rankings, every comparison cached. */
 #define _XOPEN_SOURCE 700
 #include <errno.h>
+#include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,12 +13,37 @@
 #include "duel_config.h"
 #include "duel_ctrl.h"
 #include "duel_files.h"
+#include "duel_json.h"
+#include "duel_outputs.h"
 #include "duel_generations.h"
 #include "duel_pairs.h"
 #include "duel_perf.h"
 #include "duel_world_cfg.h"
 #include "neat_coev.h"
 #include "duel_text.h"
+
+/* Where duel_perf_measure's lines go: stderr ("duel_evolve: LINE"), or the caller's buffer (duel_perf_opts.msg,
+ * the last line kept). Process-wide for the call: one measure at a time in a process (the commands, an
+ * experiment, the Python package's lock). */
+static char *duel_perf_sink;
+static size_t duel_perf_sink_cap;
+
+static void duel_perf_say(const char *fmt, ...)
+{
+    char line[8400];
+    size_t n;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    n = strlen(line);
+    if (n > 0 && line[n - 1] == '\n')
+        line[n - 1] = '\0';
+    if (duel_perf_sink != NULL)
+        snprintf(duel_perf_sink, duel_perf_sink_cap, "%s", line);
+    else
+        fprintf(stderr, "duel_evolve: %s\n", line);
+}
 
 /* DIR is a run that has played every generation of its config.ini, and its
  * dominance.csv holds the levels its checkpoint does. */
@@ -29,7 +56,7 @@ static uint32_t duel_perf_csv_generations(const char *dir, const char *pre)
     char err[4400];
     uint32_t done;
     if (duel_generations_read(dir, &rows, &n, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", pre, duel_esc_msg(err));
+        duel_perf_say("%s%s: " DUEL_GENERATIONS_LOST_ADVICE "\n", pre, duel_esc_msg(err));
         return UINT32_MAX;
     }
     done = duel_generations_done(rows, n);
@@ -49,18 +76,18 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
     memset(r, 0, sizeof *r);
     r->dir = dir;
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "duel_evolve: %s%s: not a run directory (%s)\n", pre, duel_esc(dir),
+        duel_perf_say("%s%s: not a run directory (%s)\n", pre, duel_esc(dir),
                 stat(dir, &st) != 0 ? strerror(errno) : "not a directory");
         return -1;
     }
     if (realpath(dir, r->real) == NULL) {
-        fprintf(stderr, "duel_evolve: %s%s: %s\n", pre, duel_esc(dir), strerror(errno));
+        duel_perf_say("%s%s: %s\n", pre, duel_esc(dir), strerror(errno));
         return -1;
     }
     duel_config_default(&cfg);
     snprintf(path, sizeof path, "%s/config.ini", dir);
     if (duel_config_load(&cfg, path, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s%s\n", pre, duel_esc_msg(err));
+        duel_perf_say("%s%s\n", pre, duel_esc_msg(err));
         return -1;
     }
     r->net_step = cfg.neat.net_step;
@@ -68,7 +95,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
         e = duel_ckpt_load(pre, path, &c);
         if (e > 0)
-            fprintf(stderr, "duel_evolve: %s%s: missing: not a run directory, or one that never finished a "
+            duel_perf_say("%s%s: missing: not a run directory, or one that never finished a "
                             "generation\n", pre, duel_esc(path));
         if (e != 0)
             return -1;
@@ -84,7 +111,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         r->world = cfg.world;
     }
     if (gen < cfg.generations) {
-        fprintf(stderr, "duel_evolve: %s%s: not a finished run (%u of %u generations): resume it first\n", pre, duel_esc(dir),
+        duel_perf_say("%s%s: not a finished run (%u of %u generations): resume it first\n", pre, duel_esc(dir),
                 gen, cfg.generations);
         return -1;
     }
@@ -93,7 +120,7 @@ static int duel_perf_open_in(duel_perf_run *r, const char *dir, const char *pre,
         return -1;
     r->hash = (uint64_t *)malloc(r->n_levels * sizeof *r->hash);
     if (r->hash == NULL) {
-        fprintf(stderr, "duel_evolve: %sout of memory\n", pre);
+        duel_perf_say("%sout of memory\n", pre);
         return -1;
     }
     for (k = 0; k < r->n_levels; k++)
@@ -162,7 +189,7 @@ static void duel_perf_chunk_progress(void *ud, size_t done, size_t n)
 
 #define DUEL_PERF_OOM(m_)                                                                                             \
     do {                                                                                                              \
-        fprintf(stderr, "duel_evolve: %sout of memory\n", pre);                                                       \
+        duel_perf_say("%sout of memory\n", pre);                                                       \
         rc = 1;                                                                                                       \
         goto out;                                                                                                     \
     } while (0)
@@ -174,12 +201,12 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
     uint32_t i, j, k;
     int rc = 2;
     if (n_cand == 0 || n_against == 0) {
-        fprintf(stderr, "duel_evolve: %s%s\n", pre,
+        duel_perf_say("%s%s\n", pre,
                 n_cand == 0 ? "which runs? (no candidate run before --against)" : "an empty ranking: --against names no run");
         return 2;
     }
     if ((uint64_t)n_cand + n_against > DUEL_PERF_MAX_RUNS) {
-        fprintf(stderr, "duel_evolve: %s%u runs, at most %d\n", pre, n_cand + n_against, DUEL_PERF_MAX_RUNS);
+        duel_perf_say("%s%u runs, at most %d\n", pre, n_cand + n_against, DUEL_PERF_MAX_RUNS);
         return 2;
     }
     m->n_cand = n_cand;
@@ -193,7 +220,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
         m->n_runs++;
         for (j = 0; j < i; j++)
             if (strcmp(m->runs[j].real, m->runs[i].real) == 0) {
-                fprintf(stderr, "duel_evolve: %s%s is given twice as a candidate\n", pre, duel_esc(cand[i]));
+                duel_perf_say("%s%s is given twice as a candidate\n", pre, duel_esc(cand[i]));
                 goto out;
             }
     }
@@ -205,7 +232,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
             ;
         for (k = 0; k < m->n_rank; k++)
             if (m->rank[k] == j) {
-                fprintf(stderr, "duel_evolve: %s%s is given twice after --against\n", pre, duel_esc(against[i]));
+                duel_perf_say("%s%s is given twice after --against\n", pre, duel_esc(against[i]));
                 duel_perf_close(&r);
                 goto out;
             }
@@ -220,7 +247,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
     for (i = 1; i < m->n_runs; i++)
         if (!duel_rules_equal(&m->runs[i].world, &m->runs[0].world)) {
             char a[40], b[40];
-            fprintf(stderr, "duel_evolve: %s%s was made in world %s, %s in world %s: runs of different worlds are "
+            duel_perf_say("%s%s was made in world %s, %s in world %s: runs of different worlds are "
                             "not compared\n", pre, duel_esc(m->runs[0].dir), duel_world_label(&m->runs[0].world, a, sizeof a),
                     duel_esc(m->runs[i].dir), duel_world_label(&m->runs[i].world, b, sizeof b));
             goto out;
@@ -253,7 +280,7 @@ static int duel_perf_open_all(duel_perf *m, const char *const *cand, uint32_t n_
             mine++;
         }
         if (mine == 0) {
-            fprintf(stderr, "duel_evolve: %s%s: an empty ranking: --against names no run but itself\n", pre,
+            duel_perf_say("%s%s: an empty ranking: --against names no run but itself\n", pre,
                     duel_esc(m->runs[i].dir));
             goto out;
         }
@@ -270,7 +297,7 @@ static void duel_perf_save(duel_cmp_cache *c, uint32_t n, const char *pre, int *
     for (i = 0; i < n; i++)
         if (duel_cmp_cache_save(&c[i]) != 0 && !*failed) {
             *failed = 1;
-            fprintf(stderr, "duel_evolve: %s%s: cannot write the cache (%s); the results are not affected\n", pre,
+            duel_perf_say("%s%s: cannot write the cache (%s); the results are not affected\n", pre,
                     duel_esc(c[i].path), strerror(errno));
         }
 }
@@ -289,8 +316,24 @@ static int duel_perf_cache_open(duel_cmp_cache *c, const char *path, const duel_
     return r == 0 ? 0 : -1;
 }
 
+static int duel_perf_measure_in(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
+                                uint32_t n_against, const duel_perf_opts *o);
+
 int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
                       uint32_t n_against, const duel_perf_opts *o)
+{
+    int rc;
+    duel_perf_sink = o->msg;
+    duel_perf_sink_cap = o->msg_cap;
+    if (o->msg != NULL && o->msg_cap > 0)
+        o->msg[0] = '\0';
+    rc = duel_perf_measure_in(m, cand, n_cand, against, n_against, o);
+    duel_perf_sink = NULL;
+    return rc;
+}
+
+static int duel_perf_measure_in(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
+                                uint32_t n_against, const duel_perf_opts *o)
 {
     duel_cmp_cache *caches = NULL, shared;
     duel_pair *jobs = NULL;
@@ -318,14 +361,14 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
     if (caches == NULL)
         DUEL_PERF_OOM(m);
     if (o->cache_path != NULL && duel_perf_cache_open(&shared, o->cache_path, o, err, sizeof err) != 0) {
-        fprintf(stderr, "duel_evolve: %s%s\n", pre, duel_esc_msg(err));
+        duel_perf_say("%s%s\n", pre, duel_esc_msg(err));
         goto out;
     }
     for (i = 0; i < m->n_cand && o->cache_path == NULL; i++) {
         char path[4200];
         snprintf(path, sizeof path, "%s/compare-cache.csv", m->runs[i].dir);
         if (duel_perf_cache_open(&caches[i], path, o, err, sizeof err) != 0) {
-            fprintf(stderr, "duel_evolve: %s%s\n", pre, duel_esc_msg(err));
+            duel_perf_say("%s%s\n", pre, duel_esc_msg(err));
             goto out;
         }
     }
@@ -360,7 +403,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
         }
     }
     if (n_jobs > 0 && o->mode == DUEL_PERF_CACHE_ONLY) {
-        fprintf(stderr, "duel_evolve: %s%u comparisons are not in the caches (the first: %s against %s): they would "
+        duel_perf_say("%s%u comparisons are not in the caches (the first: %s against %s): they would "
                         "have to be played\n", pre, n_jobs, duel_esc(jobs[0].a->name), duel_esc(jobs[0].b->name));
         goto out;
     }
@@ -377,7 +420,7 @@ int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, co
             ch.base = from;
             if (duel_pairs_play(&m->world, jobs + from, n, o->threads, o->progress ? duel_perf_chunk_progress : NULL,
                                 &ch) != 0) {
-                fprintf(stderr, "duel_evolve: %sa comparison failed (out of memory)\n", pre);
+                duel_perf_say("%sa comparison failed (out of memory)\n", pre);
                 rc = 1;
                 goto out;
             }
@@ -448,3 +491,99 @@ void duel_perf_free(duel_perf *m)
     free(m->gen_co);
     memset(m, 0, sizeof *m);
 }
+
+const duel_out_kind duel_perf_csv_kind = {"a compare CSV", "candidate,candidate_level,", NULL};
+const duel_out_kind duel_perf_json_kind = {"a compare JSON file", "{\n  \"games_per_comparison\"", NULL};
+const duel_out_kind duel_perf_cache_kind = {"a compare cache", NULL, duel_cmp_cache_is};
+
+
+/* mean and sample standard deviation (0 for one value) */
+duel_cmp_stats duel_cmp_stat(const double *v, size_t n)
+{
+    duel_cmp_stats s = {0.0, 0.0};
+    size_t k;
+    for (k = 0; k < n; k++)
+        s.mean += v[k] / (double)n;
+    for (k = 0; n > 1 && k < n; k++)
+        s.sd += (v[k] - s.mean) * (v[k] - s.mean) / (double)(n - 1);
+    s.sd = sqrt(s.sd);
+    return s;
+}
+
+void duel_perf_write_csv(FILE *f, const void *ctx)
+{
+    const duel_perf *m = (const duel_perf *)ctx;
+    uint32_t k, l;
+    char w[40];
+    duel_world_label(&m->world, w, sizeof w);
+    fprintf(f, "candidate,candidate_level,candidate_generation,ranking,ranking_levels,highest_level,"
+               "highest_generation,highest_performance,contiguous_level,contiguous_generation,contiguous_performance,"
+               "wins,world,candidate_step,ranking_step\n");
+    for (k = 0; k < m->n_pairs; k++) {
+        const duel_perf_pair *p = &m->pairs[k];
+        const duel_perf_run *c = &m->runs[p->cand], *r = &m->runs[p->rank];
+        duel_csv_field(f, c->dir);
+        fprintf(f, ",%u,%u,", c->n_levels, c->levels[c->n_levels - 1].generation);
+        duel_csv_field(f, r->dir);
+        fprintf(f, ",%u,%u,%.0f,%.6f,%u,%.0f,%.6f,", r->n_levels, p->highest,
+                duel_perf_gen(m, p, p->highest), duel_perf_level_share(m, p, p->highest), p->contiguous,
+                duel_perf_gen(m, p, p->contiguous), duel_perf_level_share(m, p, p->contiguous));
+        for (l = 0; l < r->n_levels; l++)
+            fprintf(f, "%s%u:%u", l ? " " : "", p->t[l].wins_a, p->t[l].wins_b);
+        fprintf(f, ",%s,%s,%s\n", w, duel_step_name(c->net_step), duel_step_name(r->net_step));
+    }
+}
+
+static void duel_cmp_json_stats(FILE *f, const char *name, const double *perf, const double *gen, uint32_t n,
+                                const double *pair_perf, uint32_t n_pairs)
+{
+    duel_cmp_stats sp = duel_cmp_stat(perf, n), sg = duel_cmp_stat(gen, n), pp = duel_cmp_stat(pair_perf, n_pairs);
+    fprintf(f, "\"%s\": {\"performance_mean\": %.6f, \"performance_sd\": %.6f, \"equivalent_generation_mean\": %.3f, "
+               "\"equivalent_generation_sd\": %.3f, \"pairs_performance_mean\": %.6f, \"pairs_performance_sd\": %.6f}",
+            name, sp.mean, sp.sd, sg.mean, sg.sd, pp.mean, pp.sd);
+}
+
+void duel_perf_write_json(FILE *f, const void *ctx)
+{
+    const duel_perf *m = (const duel_perf *)ctx;
+    uint32_t i, k, l, at = 0;
+    char w[40];
+    fprintf(f, "{\n  \"games_per_comparison\": %d,\n  \"world\": \"%s\",\n  \"world_id\": \"%016llx\",\n  \"runs\": %u,\n  "
+               "\"summary\": {", 2 * DUEL_CONFIGS, duel_world_label(&m->world, w, sizeof w),
+            (unsigned long long)duel_rules_id(&m->world), m->n_cand);
+    duel_cmp_json_stats(f, "highest", m->perf_hi, m->gen_hi, m->n_cand, m->pair_hi, m->n_pairs);
+    fprintf(f, ", ");
+    duel_cmp_json_stats(f, "contiguous", m->perf_co, m->gen_co, m->n_cand, m->pair_co, m->n_pairs);
+    fprintf(f, "},\n  \"candidates\": [\n");
+    for (i = 0; i < m->n_cand; i++) {
+        const duel_perf_run *c = &m->runs[i];
+        fprintf(f, "    {\"run\": ");
+        duel_json_str(f, c->dir);
+        fprintf(f, ", \"levels\": %u, \"generation\": %u, \"hidden\": %u, \"connections\": %u, "
+                   "\"highest\": {\"performance\": %.6f, \"equivalent_generation\": %.3f}, "
+                   "\"contiguous\": {\"performance\": %.6f, \"equivalent_generation\": %.3f}, \"step\": \"%s\", "
+                   "\"rankings\": [\n",
+                c->n_levels, c->levels[c->n_levels - 1].generation, c->levels[c->n_levels - 1].hidden,
+                c->levels[c->n_levels - 1].conns, m->perf_hi[i], m->gen_hi[i], m->perf_co[i], m->gen_co[i],
+                duel_step_name(c->net_step));
+        for (k = 0; at < m->n_pairs && m->pairs[at].cand == i; at++, k++) {
+            const duel_perf_pair *p = &m->pairs[at];
+            const duel_perf_run *r = &m->runs[p->rank];
+            fprintf(f, "%s      {\"run\": ", k ? ",\n" : "");
+            duel_json_str(f, r->dir);
+            fprintf(f, ", \"levels\": %u, \"highest_level\": %u, \"highest_generation\": %.0f, "
+                       "\"contiguous_level\": %u, \"contiguous_generation\": %.0f, \"wins\": [",
+                    r->n_levels, p->highest, duel_perf_gen(m, p, p->highest), p->contiguous,
+                    duel_perf_gen(m, p, p->contiguous));
+            for (l = 0; l < r->n_levels; l++)
+                fprintf(f, "%s%u", l ? ", " : "", p->t[l].wins_a);
+            fprintf(f, "], \"losses\": [");
+            for (l = 0; l < r->n_levels; l++)
+                fprintf(f, "%s%u", l ? ", " : "", p->t[l].wins_b);
+            fprintf(f, "]}");
+        }
+        fprintf(f, "\n    ]}%s\n", i + 1 < m->n_cand ? "," : "");
+    }
+    fprintf(f, "  ]\n}\n");
+}
+

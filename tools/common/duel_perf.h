@@ -5,9 +5,11 @@
 #include <limits.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "duel.h"
 #include "duel_levels.h"
+#include "duel_outputs.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -62,6 +64,9 @@ typedef struct duel_perf_opts {
     int force;               /* 1: a cache file that is not one is replaced (--force); 0: refused */
     int no_checkpoint;       /* 1: a run is finished when generations.csv records every generation (a report of
                               * runs kept without their checkpoints); 0: its checkpoint says so */
+    char *msg;               /* NULL: lines on stderr; else nothing printed, the last line here (without
+                              * "duel_evolve: ") */
+    size_t msg_cap;
 } duel_perf_opts;
 
 /* Opens every candidate and every ranking (each a finished run), pairs every
@@ -73,6 +78,18 @@ typedef struct duel_perf_opts {
 int duel_perf_measure(duel_perf *m, const char *const *cand, uint32_t n_cand, const char *const *against,
                       uint32_t n_against, const duel_perf_opts *o);
 void duel_perf_free(duel_perf *m);
+
+/* compare's outputs of a measure m (ctx: const duel_perf *, for duel_file_write_with): --csv, a row per
+ * (candidate, ranking) pair, and --json, the summary and every pair (docs/tools.md, "compare"). */
+void duel_perf_write_csv(FILE *f, const void *ctx);
+void duel_perf_write_json(FILE *f, const void *ctx);
+/* What each of compare's files is, for the output checks (duel_outputs.h). */
+extern const duel_out_kind duel_perf_csv_kind, duel_perf_json_kind, duel_perf_cache_kind;
+/* mean and sample standard deviation (0 for one value) */
+typedef struct duel_cmp_stats {
+    double mean, sd;
+} duel_cmp_stats;
+duel_cmp_stats duel_cmp_stat(const double *v, size_t n);
 
 /* The generation of level (1-based) of pair p's ranking; 0.0 for level 0 (nothing defeated: as if it equalled
  * generation 0). */
