@@ -1,4 +1,4 @@
-"""A champion for a microcontroller: its blob as a C array and header, written by duel_evolve export's own code.
+"""A champion for a microcontroller: its blob as a C array and header, written by duel_evolve export's own library.
 
     from neat_duel import deploy
     deploy.export_c(net, "champion", "champion.c", header="champion.h")
@@ -10,11 +10,10 @@ is not a C file from export is refused unless force (docs/tools.md, "Outputs").
 from __future__ import annotations
 
 import os
-import tempfile
 from typing import Union
 
-from ._core import Network
-from .runs import _call
+from ._core import Network, export_c as _export_c
+from .runs import RunError
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -22,16 +21,9 @@ PathLike = Union[str, "os.PathLike[str]"]
 def export_c(net: Network, name: str, c_file: PathLike, *, header: PathLike | None = None, force: bool = False) -> None:
     """duel_evolve export BLOB --c-array NAME -o C_FILE [--header HEADER]: net's blob as C source (and a header).
     RunError with the command's message when it refuses (a bad name, a file that is not its output)."""
-    with tempfile.TemporaryDirectory() as d:
-        blob = os.path.join(d, f"{name}.blob")  # the files name their source: NAME.blob, as `export NAME.blob` does
-        with open(blob, "wb") as f:
-            f.write(net.blob)
-        args = [blob, "--c-array", name, "-o", os.fspath(c_file)]
-        if header is not None:
-            args += ["--header", os.fspath(header)]
-        if force:
-            args.append("--force")
-        _call("export", args, os.fspath(c_file))
-
+    status, message = _export_c(net.blob, name, os.fspath(c_file), os.fspath(header) if header is not None else "",
+                                force)
+    if status != 0:
+        raise RunError(message, status, os.fspath(c_file))
 
 __all__ = ["export_c"]

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Iterator, NoReturn, Union
 
 from ._core import (Coevolution, DuelConfig, Genome, Network, RunEngine, compare_json, ladder_json, read_dominance,
-                    read_generations, run_command)
+                    read_generations)
 from .errors import NeatError
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -432,16 +432,6 @@ def resume(
     with Run.resume(directory, generations=generations, threads=threads, set=set, shorten=shorten, reporters=rep,
                     quiet=quiet) as r:
         return r.play()
-
-
-def _call(command: str, args: list[str], path: str, keep_stdout: bool = False) -> str:
-    status, out, text = run_command(command, args, keep_stdout)
-    if status == 130:
-        raise KeyboardInterrupt(text.strip() or "interrupted")
-    if status != 0:
-        lines = [x for x in text.splitlines() if x.strip()]
-        raise RunError(lines[-1] if lines else f"duel_evolve {command}: exit status {status}", status, path)
-    return out
 
 
 def ladder(

@@ -1,13 +1,11 @@
-// nd_run.cpp - duel_evolve's ladder, compare and export called in this process (tools/cli/, the very code of the
-// commands), and a run directory's records read back by the C readers. (A run is the run engine: nd_engine.cpp.)
+// nd_run.cpp - duel_evolve's ladder, compare and export by the commands' own libraries (tools/common/: the same games,
+// JSON and files), and a run directory's records read back by the C readers. (A run is the run engine:
+// nd_engine.cpp.) Nothing here prints: a refusal comes back as the command's status and line.
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
-
-#include <unistd.h>
 
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/tuple.h>
@@ -15,9 +13,9 @@
 
 #include "nd.h"
 extern "C" {
-#include "duel_cli.h"
 #include "duel_ctrl.h"
 #include "duel_dominance.h"
+#include "duel_export_c.h"
 #include "duel_files.h"
 #include "duel_ladder_games.h"
 #include "duel_outputs.h"
@@ -25,91 +23,43 @@ extern "C" {
 #include "duel_generations.h"
 }
 
-// The command's lines to stderr are kept (for the exception's message) and passed on to the real stderr as they
-// were; Ctrl-C stops the run after its generation in flight, as in the command, and is Python's again afterwards.
-static std::string nd_take(FILE *f)
+// duel_evolve export NAME.blob --c-array NAME -o C_FILE [--header H] [--force], by the command's own library
+// (duel_export_c.c), from the blob's bytes: (status, message). The command's rules for outputs hold.
+static std::tuple<int, std::string> nd_export_c(nb::bytes blob, const std::string &name, const nd_path &c_path,
+                                                const nd_path &h_path, bool force)
 {
-    std::string text;
-    std::rewind(f);
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0)
-        text.append(buf, n);
-    std::fclose(f);
-    return text;
-}
-
-static std::tuple<int, std::string, std::string> nd_duel_evolve(const std::string &command,
-                                                                const std::vector<std::string> &args, bool keep_stdout)
-{
-    int (*cmd)(int, char **) = command == "export" ? duel_cmd_export : nullptr;
-    if (cmd == nullptr)
-        throw nd_error(NEAT_E_ARG, "command: 'export' (a run is neat_duel.runs.Run; ladder and compare are "
-                                   "neat_duel.runs.ladder and .compare)");
-    // the commands' output goes to fds 1 and 2, redirected here for the call: one at a time in a process
-    static std::mutex one;
-    std::unique_lock<std::mutex> held(one, std::try_to_lock);
-    if (!held.owns_lock())
-        throw nd_error(NEAT_E_STATE, "duel_evolve " + command + ": another duel_evolve command runs in this process "
-                                     "(one at a time: use a process of its own for each, or play the games with Duel)");
-    std::vector<std::vector<char>> store;
-    std::vector<char *> argv;
-    for (const std::string &a : args) {
-        store.emplace_back(a.begin(), a.end());
-        store.back().push_back('\0');
-    }
-    for (auto &s : store)
-        argv.push_back(s.data());
-    argv.push_back(nullptr);
-    std::fflush(stderr);
-    std::fflush(stdout);
-    FILE *err = std::tmpfile();
-    int saved = dup(2);
-    if (err == nullptr || saved < 0 || dup2(fileno(err), 2) < 0) {
-        if (err != nullptr)
-            std::fclose(err);
-        if (saved >= 0)
-            close(saved);
-        throw nd_error(NEAT_E_NOMEM, "cannot keep the run's messages (no temporary file)");
-    }
-    // stdout kept too when asked (a command's --json): the rest of the time its lines go where Python's go
-    FILE *out = keep_stdout ? std::tmpfile() : nullptr;
-    int saved_out = keep_stdout ? dup(1) : -1;
-    if (keep_stdout && (out == nullptr || saved_out < 0 || dup2(fileno(out), 1) < 0)) {
-        dup2(saved, 2);
-        close(saved);
-        std::fclose(err);
-        if (out != nullptr)
-            std::fclose(out);
-        if (saved_out >= 0)
-            close(saved_out);
-        throw nd_error(NEAT_E_NOMEM, "cannot keep the command's output (no temporary file)");
-    }
-    struct sigaction old_int, old_term;
-    sigaction(SIGINT, nullptr, &old_int);
-    sigaction(SIGTERM, nullptr, &old_term);
+    const std::string c_file = c_path.string(), header = h_path.string();
+    const std::string source = name + ".blob"; // the files name their source, as `export NAME.blob` does
+    char msg[4600];
+    duel_export x;
+    const char *in[2];
     int rc;
+    std::memset(&x, 0, sizeof x);
+    x.name = name.c_str();
+    x.header = header.empty() ? nullptr : header.c_str();
+    if (!duel_export_name_ok(x.name))
+        return {2, "export: '" + name + "' is not a C identifier of at most " + std::to_string(DUEL_EXPORT_NAME_MAX) +
+                       " characters (nor a keyword)"};
     {
         nb::gil_scoped_release nogil;
-        rc = cmd((int)args.size(), argv.data());
-        std::fflush(stderr);
-        std::fflush(stdout);
+        // before anything is written: never over the other output or a file that is not an export
+        in[0] = nullptr;
+        in[1] = x.header;
+        rc = duel_out_allowed_msg("export", "-o", c_file.c_str(), &duel_export_c_kind, force, in, 2, msg, sizeof msg);
+        in[1] = c_file.c_str();
+        if (rc == 0 && x.header != nullptr)
+            rc = duel_out_allowed_msg("export", "--header", x.header, &duel_export_c_kind, force, in, 2, msg,
+                                      sizeof msg);
+        if (rc == 0 && duel_export_from_bytes(&x, source.c_str(), (const uint8_t *)blob.c_str(), blob.size(), msg,
+                                              sizeof msg) != 0)
+            rc = 2;
+        if (rc == 0 && x.header != nullptr)
+            rc = duel_file_write_with_msg(x.header, duel_export_write_header_cb, &x, msg, sizeof msg);
+        if (rc == 0)
+            rc = duel_file_write_with_msg(c_file.c_str(), duel_export_write_cb, &x, msg, sizeof msg);
+        std::free(x.blob);
     }
-    sigaction(SIGINT, &old_int, nullptr);
-    sigaction(SIGTERM, &old_term, nullptr);
-    dup2(saved, 2);
-    close(saved);
-    std::string stdout_text;
-    if (keep_stdout) {
-        dup2(saved_out, 1);
-        close(saved_out);
-        stdout_text = nd_take(out);
-    }
-    std::string text = nd_take(err);
-    if (!text.empty() && write(2, text.data(), text.size()) < 0) {
-        // nowhere to say it
-    }
-    return {rc, stdout_text, text};
+    return {rc, rc != 0 ? std::string(msg) : std::string()};
 }
 
 // duel_evolve ladder DIR [--top | --levels LO-HI] [--against NAMES] --json, by the command's own library
@@ -301,9 +251,10 @@ static nb::list nd_generations(const std::string &dir)
 
 void nd_bind_run(nb::module_ &m)
 {
-    m.def("run_command", &nd_duel_evolve, nb::arg("command"), nb::arg("args"), nb::arg("keep_stdout") = false,
-          "duel_evolve COMMAND ARGS (export) in this process: (exit status, what it wrote\n"
-          "to stdout when keep_stdout, else '', what it wrote to stderr).");
+    m.def("export_c", &nd_export_c, nb::arg("blob"), nb::arg("name"), nb::arg("c_file"), nb::arg("header") = "",
+          nb::arg("force") = false,
+          "duel_evolve export NAME.blob --c-array NAME -o C_FILE [--header HEADER] [--force] by the command's\n"
+          "library, from the blob's bytes: (status, message).");
     m.def("ladder_json", &nd_ladder, nb::arg("directory"), nb::arg("top") = false, nb::arg("lo") = 0,
           nb::arg("hi") = 0, nb::arg("against") = std::vector<std::string>(),
           "duel_evolve ladder DIRECTORY --json by the command's library: (status, JSON text, message).");

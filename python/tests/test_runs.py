@@ -50,9 +50,8 @@ def test_the_commands_refusals(tmp_path: pathlib.Path) -> None:
         runs.resume(tmp_path / "nothing")
     with pytest.raises(runs.RunError, match="unknown"):
         runs.run(SMALL, tmp_path / "b", set=["nope=1"])
-    # a run is the engine's, not a command line's
-    with pytest.raises(nd.ArgumentError, match="neat_duel.runs.Run"):
-        nd._core.run_command("resume", [str(tmp_path / "a")])
+    # no command line is run in the package: every run, ladder, comparison and export is a library's
+    assert not hasattr(nd._core, "run_command")
     with pytest.raises(FileNotFoundError):
         runs.RunDir(tmp_path / "mine")
     text = (tmp_path / "a" / "dominance.csv").read_bytes()

@@ -394,19 +394,20 @@ int duel_mkdir(const char *path)
     return -1;
 }
 
-int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
+int duel_file_write_with_msg(const char *path, duel_write_fn write, const void *ctx, char *msg, size_t cap)
 {
-    char *text = NULL;
+    char *text = NULL, esc[1100];
     size_t len = 0;
     FILE *mem = open_memstream(&text, &len);
     int r;
+    duel_text_escape(path, esc, sizeof esc);
     if (mem == NULL) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
+        snprintf(msg, cap, "%s: out of memory", esc);
         return 1;
     }
     write(mem, ctx);
     if (fclose(mem) != 0) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
+        snprintf(msg, cap, "%s: out of memory", esc);
         free(text);
         return 1;
     }
@@ -414,8 +415,17 @@ int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
     free(text);
     if (r == 0)
         return 0;
-    fprintf(stderr, "duel_evolve: %s: %s: %s\n", duel_esc(path), r == -1 ? "cannot write" : "write failed", strerror(errno));
+    snprintf(msg, cap, "%s: %s: %s", esc, r == -1 ? "cannot write" : "write failed", strerror(errno));
     return r == -1 ? 2 : 1;
+}
+
+int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)
+{
+    char msg[1400];
+    int r = duel_file_write_with_msg(path, write, ctx, msg, sizeof msg);
+    if (r != 0)
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(msg));
+    return r;
 }
 
 int duel_dir_lock(const char *dir, duel_lock *lk)

@@ -91,6 +91,8 @@ uint32_t duel_csv_odd_line(const char *text, size_t len, const char **what);
  * stderr. */
 typedef void (*duel_write_fn)(FILE *f, const void *ctx);
 int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx);
+/* The same, printing nothing: the status with the line in msg (the path escaped). */
+int duel_file_write_with_msg(const char *path, duel_write_fn write, const void *ctx, char *msg, size_t cap);
 
 /* A working directory's lock: the directory itself and DIR/.lock, both
  * flock'ed (the kernel drops them when the process ends, even by kill -9).
