@@ -1,4 +1,4 @@
-/* duel_perf.c - the paper's performance measure: candidates' highest dominants against other runs' dominance rankings, every comparison cached. */
+/* duel_perf.c - the paper's performance measure: candidates' highest dominants against other runs' dominance rankings, every comparison cached, and compare's CSV and JSON (for compare, experiment and runs.compare). */
 #define _XOPEN_SOURCE 700
 #include <errno.h>
 #include <math.h>
