@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import pathlib
 import subprocess
+import time
 
 import pytest
 
@@ -170,3 +171,27 @@ def test_generation_by_generation_with_reporters(tmp_path: pathlib.Path) -> None
     with runs.Run.resume(tmp_path / "c") as run:
         run.play(until=lambda g: g.generation >= 5)
         assert run.generation == 6
+
+
+def test_ctrl_c_saves_the_generation_in_flight(tmp_path: pathlib.Path) -> None:
+    """Ctrl-C during a run's games: the generation in flight finishes and is saved, KeyboardInterrupt is raised,
+    and the run resumes to the bytes of one that never stopped."""
+    import _thread
+    import threading
+
+    t0 = time.perf_counter()
+    runs.run(SMALL, tmp_path / "ref", generations=12, threads=1)
+    per_gen = (time.perf_counter() - t0) / 12
+    timer = threading.Timer(max(0.05, 3 * per_gen), _thread.interrupt_main)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            runs.run(SMALL, tmp_path / "cut", generations=12, threads=1)
+    finally:
+        timer.cancel()
+    done = runs.RunDir(tmp_path / "cut").checkpoint().generation
+    assert 0 < done < 12
+    runs.resume(tmp_path / "cut")
+    for f in ("checkpoint.bin", "dominance.csv"):
+        assert (tmp_path / "cut" / f).read_bytes() == (tmp_path / "ref" / f).read_bytes()
+
