@@ -11,7 +11,7 @@ package binds them. docs/python.md is the guide::
 """
 from __future__ import annotations
 
-from . import deploy, errors, gym, runs
+from . import deploy, errors, gym, pages, runs
 from .data import data_path
 from ._core import (
     Q15_ONE,

@@ -13,6 +13,8 @@
 #include "nd.h"
 extern "C" {
 #include "duel.h"
+#include "duel_html.h"
+#include "duel_replay.h"
 #include "duel_cmp_cache.h"
 #include "duel_config.h"
 #include "duel_games.h"
@@ -340,6 +342,42 @@ void nd_bind_duel(nb::module_ &m)
         "One game (duel_evolve play A B --food K --side west|east): winner 'a', 'b' or 'none', outcome\n"
         "('west', 'east', 'draw', 'timeout'), steps, energy and food eaten of (a, b). Networks are reset\n"
         "first.");
+    m.def("duel_page", [](nb::handle a, nb::handle b, const nd_path &path, int food, bool a_west, nb::handle config,
+                          const std::string &a_name, const std::string &b_name, bool force) {
+            nd_ctrl ca, cb;
+            nd_ctrl_pair(a, b, &ca, &cb);
+            if (food < DUEL_TRAINING || food >= DUEL_CONFIGS)
+                throw nd_error(NEAT_E_ARG, "food: -1 (the training items) or a comparison layout 0..143");
+            const duel_rules *rules = nd_rules(config);
+            const std::string out = path.string();
+            char msg[4600] = "";
+            int st;
+            {
+                nb::gil_scoped_release nogil;
+                duel_replay rep;
+                duel_replay_init(&rep);
+                int err = a_west ? duel_replay_from_game_rules(&rep, rules, &ca.c, &cb.c, food)
+                                 : duel_replay_from_game_rules(&rep, rules, &cb.c, &ca.c, food);
+                if (err) {
+                    std::snprintf(msg, sizeof msg, "the game failed (%d)", err);
+                    st = 1;
+                } else {
+                    char title[600];
+                    std::snprintf(rep.west, sizeof rep.west, "%s", (a_west ? a_name : b_name).c_str());
+                    std::snprintf(rep.east, sizeof rep.east, "%s", (a_west ? b_name : a_name).c_str());
+                    std::snprintf(title, sizeof title, "%s vs %s", rep.west, rep.east);
+                    st = duel_html_write_duel("render", out.c_str(), &rep, title, force, nullptr, 0, msg, sizeof msg);
+                }
+                duel_replay_free(&rep);
+            }
+            return std::make_tuple(st, std::string(msg));
+        }, nb::arg("a"), nb::arg("b"), nb::arg("path"), nb::arg("food") = -1, nb::arg("a_west") = true,
+        nb::arg("config") = nb::none(), nb::arg("a_name") = "a", nb::arg("b_name") = "b", nb::arg("force") = false,
+        nb::sig("def duel_page(a: Network | str, b: Network | str, path: str | os.PathLike[str], food: int = -1, "
+                "a_west: bool = True, config: DuelConfig | None = None, a_name: str = 'a', b_name: str = 'b', "
+                "force: bool = False) -> tuple[int, str]"),
+        "duel_evolve render A B --html FILE by the command's library: the game's web page, written atomically\n"
+        "(status, message).");
     m.def("duel_compare", [](nb::handle a, nb::handle b, nb::handle config) {
             nd_ctrl ca, cb;
             nd_ctrl_pair(a, b, &ca, &cb);

@@ -21,6 +21,7 @@ extern "C" {
 #include "duel_outputs.h"
 #include "duel_perf.h"
 #include "duel_generations.h"
+#include "duel_html.h"
 }
 
 // duel_evolve export NAME.blob --c-array NAME -o C_FILE [--header H] [--force], by the command's own library
@@ -60,6 +61,42 @@ static std::tuple<int, std::string> nd_export_c(nb::bytes blob, const std::strin
         std::free(x.blob);
     }
     return {rc, rc != 0 ? std::string(msg) : std::string()};
+}
+
+// duel_evolve report RUN --html OUT / experiment report DIR --html, by the command's library: (status, message,
+// pages written).
+static void nd_page_count(void *ud, const char *, size_t)
+{
+    ++*static_cast<unsigned long *>(ud);
+}
+
+static std::tuple<int, std::string, unsigned long> nd_pages(const nd_path &dirp, const nd_path &outp, bool experiment,
+                                                            const std::string &games, bool embed, bool force)
+{
+    duel_html_report o;
+    unsigned long pages = 0;
+    char msg[4600] = "";
+    int st;
+    std::memset(&o, 0, sizeof o);
+    if (games == "all")
+        o.games = DUEL_HTML_GAMES_ALL;
+    else if (games == "top")
+        o.games = DUEL_HTML_GAMES_TOP;
+    else if (games == "none")
+        o.games = DUEL_HTML_GAMES_NONE;
+    else
+        return {2, "games: 'all', 'top' or 'none', not '" + games + "'", 0};
+    o.embed = embed;
+    o.force = force;
+    o.wrote = nd_page_count;
+    o.ud = &pages;
+    const std::string dir = dirp.string(), out = outp.string();
+    {
+        nb::gil_scoped_release nogil;
+        st = experiment ? duel_html_experiment_report(dir.c_str(), out.c_str(), &o, msg, sizeof msg)
+                        : duel_html_run_report(dir.c_str(), out.c_str(), &o, msg, sizeof msg);
+    }
+    return {st, st != 0 ? std::string(msg) : std::string(), pages};
 }
 
 // duel_evolve ladder DIR [--top | --levels LO-HI] [--against NAMES] --json, by the command's own library
@@ -255,6 +292,11 @@ void nd_bind_run(nb::module_ &m)
           nb::arg("force") = false,
           "duel_evolve export NAME.blob --c-array NAME -o C_FILE [--header HEADER] [--force] by the command's\n"
           "library, from the blob's bytes: (status, message).");
+    duel_html_set_generator("neat-duel " NEAT_DUEL_VERSION_STRING); // the pages name their maker, as the command's do
+    m.def("html_pages", &nd_pages, nb::arg("directory"), nb::arg("out"), nb::arg("experiment") = false,
+          nb::arg("games") = "all", nb::arg("embed") = false, nb::arg("force") = false,
+          "duel_evolve report RUN --html OUT (or experiment report DIR --html, OUT its report/html) by the command's\n"
+          "library: (status, message, pages written).");
     m.def("ladder_json", &nd_ladder, nb::arg("directory"), nb::arg("top") = false, nb::arg("lo") = 0,
           nb::arg("hi") = 0, nb::arg("against") = std::vector<std::string>(),
           "duel_evolve ladder DIRECTORY --json by the command's library: (status, JSON text, message).");

@@ -52,5 +52,13 @@ int duel_cmd_log(int argc, char **argv);
 int duel_cmd_render(int argc, char **argv);
 int duel_cmd_render_net(int argc, char **argv);
 int duel_cmd_export(int argc, char **argv);
+int duel_cmd_report(int argc, char **argv);
+
+struct duel_html_report;
+/* The web pages' options (--games all|top|none, --embed, --force) at argv[*i]: 1 taken (and *i past its value),
+ * 0 not one of them, -1 after one line (a bad value). report and experiment report share them. */
+int duel_report_html_option(const char *cmd, int argc, char **argv, int *i, struct duel_html_report *o);
+/* "N pages in DIR (...)" */
+void duel_report_html_say(const char *out, unsigned long pages, const struct duel_html_report *o);
 
 #endif /* DUEL_CLI_H */

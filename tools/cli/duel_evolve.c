@@ -6,6 +6,7 @@
 #include "duel.h"
 #include "neat.h"
 #include "duel_cli.h"
+#include "duel_html.h"
 #include "duel_text.h"
 #include "duel_mpi.h"
 
@@ -22,7 +23,8 @@ static void duel_usage(FILE *f)
                "[--cache FILE] [--force]\n"
                "       duel_evolve experiment PLAN --out DIR [--set key=value ...] [--jobs J] [--threads T] [--quiet]\n"
                "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"
-               "       duel_evolve experiment report DIR\n"
+               "       duel_evolve experiment report DIR [--html [--games top|all|none] [--embed]]\n"
+               "       duel_evolve report RUN --html DIR [--games all|top|none] [--embed] [--force]\n"
                "       duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
                "[--lcm-log FILE.lcm] [--force] [--json]\n"
                "       duel_evolve node controller BLOB --side west|east --lcm URL [--wait-ms N] [--timeout-ms N]\n"
@@ -33,7 +35,7 @@ static void duel_usage(FILE *f)
                "       duel_evolve inspect BLOB | GENOME | RUN_DIR | CHECKPOINT\n"
                "       duel_evolve dot BLOB|GENOME [-o FILE.dot [--force]] [--min-weight W]\n"
                "       duel_evolve render (LOG.lcm | A B [--food K --side west|east]) --out DIR [--size 600] "
-               "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30] [--force]\n"
+               "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30] [--html FILE.html] [--force]\n"
                "       duel_evolve render-net BLOB --out FILE.png [--force] [--min-weight W]\n"
                "       duel_evolve export BLOB --c-array NAME [-o FILE.c] [--header FILE.h] [--force]\n"
                "A and B: champion blobs or genome files (champions/gen-N.blob, .genome) or builtin:NAME; wherever a BLOB "
@@ -52,6 +54,7 @@ static const duel_command duel_commands[] = {
     {"compare", duel_cmd_compare}, {"experiment", duel_cmd_experiment},
     {"dot", duel_cmd_dot},         {"node", duel_cmd_node},       {"log", duel_cmd_log},
     {"render", duel_cmd_render},   {"render-net", duel_cmd_render_net}, {"export", duel_cmd_export},
+    {"report", duel_cmd_report},
 };
 
 /* What a command printed must have reached standard output: a full disk or
@@ -83,7 +86,9 @@ static int duel_dispatch(int argc, char **argv)
 int duel_evolve_main(int argc, char **argv)
 {
     size_t i;
-    int rc = duel_mpi_start(argc - 1, argv + 1);
+    int rc;
+    duel_html_set_generator("neat-duel " DUEL_VERSION); /* what the web pages name as their maker (the package says the same) */
+    rc = duel_mpi_start(argc - 1, argv + 1);
     if (rc != 0)
         return duel_mpi_finish(rc);
     if (duel_mpi_size() > 1) {

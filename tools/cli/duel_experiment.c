@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "duel_cli.h"
+#include "duel_html.h"
 #include "duel_text.h"
 #include "duel_exp.h"
 #include "duel_plan.h"
@@ -12,7 +13,7 @@
     "usage: duel_evolve experiment PLAN --out DIR [--set key=value ...] [--jobs J] [--threads T] [--quiet]\n"        \
     "       duel_evolve experiment PLAN --dry-run [--set key=value ...]\n"                                            \
     "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"                                   \
-    "       duel_evolve experiment report DIR"
+    "       duel_evolve experiment report DIR [--html [--games top|all|none] [--embed] [--force]]"
 
 static int duel_exp_u32(const char *opt, const char *v, uint32_t hi, uint32_t *out)
 {
@@ -28,6 +29,34 @@ static int duel_exp_u32(const char *opt, const char *v, uint32_t hi, uint32_t *o
     return 0;
 }
 
+static void duel_exp_wrote(void *ud, const char *path, size_t bytes)
+{
+    (void)path;
+    (void)bytes;
+    (*(unsigned long *)ud)++;
+}
+
+/* The report's web pages in DIR/report/html/ (duel_html_run.c). */
+static int duel_exp_report_html(const char *dir, duel_html_report *o)
+{
+    char out[4200], msg[2048];
+    unsigned long pages = 0;
+    int st;
+    if ((size_t)snprintf(out, sizeof out, "%s/report/html", dir) >= sizeof out) {
+        fprintf(stderr, "duel_evolve: experiment report: %s: name too long\n", duel_esc(dir));
+        return 2;
+    }
+    o->wrote = duel_exp_wrote;
+    o->ud = &pages;
+    st = duel_html_experiment_report(dir, out, o, msg, sizeof msg);
+    if (st != 0) {
+        fprintf(stderr, "duel_evolve: experiment report: %s\n", duel_esc_msg(msg));
+        return st;
+    }
+    duel_report_html_say(out, pages, o);
+    return 0;
+}
+
 int duel_cmd_experiment(int argc, char **argv)
 {
     duel_exp_opts o;
@@ -35,7 +64,8 @@ int duel_cmd_experiment(int argc, char **argv)
     const char *what, *out = NULL, **sets;
     uint32_t n_sets = 0;
     char err[9000];
-    int i, mode, rc, dry = 0;
+    int i, mode, rc, dry = 0, html = 0;
+    duel_html_report ho;
 
     if (argc < 1 || argv[0][0] == '-') {
         /* (--help is answered before the command runs: duel_help.c) */
@@ -51,6 +81,8 @@ int duel_cmd_experiment(int argc, char **argv)
     }
     what = mode == 0 ? argv[0] : argv[1];
     memset(&o, 0, sizeof o);
+    memset(&ho, 0, sizeof ho);
+    ho.games = DUEL_HTML_GAMES_TOP;
     sets = (const char **)calloc((size_t)argc + 1, sizeof *sets);
     if (sets == NULL) {
         fprintf(stderr, "duel_evolve: experiment: out of memory\n");
@@ -67,6 +99,19 @@ int duel_cmd_experiment(int argc, char **argv)
         if (strcmp(a, "--dry-run") == 0 && mode == 0) {
             dry = 1;
             continue;
+        }
+        if (mode == 2 && strcmp(a, "--html") == 0) {
+            html = 1;
+            continue;
+        }
+        if (mode == 2) {
+            int r = duel_report_html_option("experiment report", argc, argv, &i, &ho);
+            if (r < 0) {
+                free(sets);
+                return 2;
+            }
+            if (r > 0)
+                continue;
         }
         if (!takes || (mode == 2) || (mode == 1 && (strcmp(a, "--out") == 0 || strcmp(a, "--set") == 0))) {
             fprintf(stderr, "duel_evolve: experiment: unknown option '%s' here (duel_evolve experiment --help)\n", duel_esc(a));
@@ -106,8 +151,11 @@ int duel_cmd_experiment(int argc, char **argv)
     if (dry) {
         duel_plan_print(stdout, plan);
         rc = 0;
-    } else if (mode == 2)
+    } else if (mode == 2) {
         rc = duel_exp_report(plan, what);
+        if (rc == 0 && html)
+            rc = duel_exp_report_html(what, &ho);
+    }
     else
         rc = duel_exp_run(plan, mode == 0 ? out : what, &o);
     duel_plan_free(plan);

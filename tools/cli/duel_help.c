@@ -75,7 +75,7 @@ static const duel_help_entry duel_help_entries[] = {
     {"experiment",
      "usage: duel_evolve experiment PLAN --out DIR [options]\n"
      "       duel_evolve experiment resume DIR [--jobs J] [--threads T] [--quiet]\n"
-     "       duel_evolve experiment report DIR\n"
+     "       duel_evolve experiment report DIR [--html [--games top|all|none] [--embed] [--force]]\n"
      "       duel_evolve experiment PLAN --dry-run\n"
      "The paper's section 6 from a plan: every method's runs, the performance measure, the ladders,\n"
      "Table 1 and the figures in DIR/report/ (docs/experiment.md).\n"
@@ -86,7 +86,13 @@ static const duel_help_entry duel_help_entries[] = {
      "  --quiet                  nothing on stderr but errors\n"
      "  --dry-run                print what the plan would run, run nothing\n"
      "  resume DIR               continue an interrupted experiment\n"
-     "  report DIR               write the report again from the files, playing nothing\n"},
+     "  report DIR               write the report again from the files, playing nothing\n"
+     "  --html                   (report) the report as web pages too, in DIR/report/html/: Table 1, the\n"
+     "                           figures, a page per method with its runs' curves and ladders\n"
+     "  --games top|all|none     (report --html) the games of each run's top level (default), of every\n"
+     "                           level, or none, as duel pages in DIR/report/html/games/\n"
+     "  --embed                  (report --html) the games inside the method pages\n"
+     "  --force                  (report --html) replace a page that is not recognisably one of duel_evolve's\n"},
     {"play",
      "usage: duel_evolve play A B [--games 288 | --food K --side west|east] [--trace FILE.csv] "
      "[--lcm-log FILE.lcm] [--force] [--world NAME|FILE] [--json]\n"
@@ -137,10 +143,12 @@ static const duel_help_entry duel_help_entries[] = {
      "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
      "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
     {"render",
-     "usage: duel_evolve render (LOG.lcm | A B [--food K --side west|east --world NAME|FILE]) --out DIR [options]\n"
-     "A duel's frames as PNG images (and a video), from an LCM log or from a game played now\n"
-     "(docs/render.md).\n"
+     "usage: duel_evolve render (LOG.lcm | A B [--food K --side west|east --world NAME|FILE]) (--out DIR | --html FILE.html) [options]\n"
+     "A duel's frames as PNG images (and a video), or as one self-contained web page, from an LCM log\n"
+     "or from a game played now (docs/render.md).\n"
      "  --out DIR                the directory for frame-K.png\n"
+     "  --html FILE.html         the game as a web page: the board, the sensors, the energies and each\n"
+     "                           network's activations, step by step (opens from file:// in any browser)\n"
      "  --food K|training        the game's food configuration (A B only)\n"
      "  --side west|east         A's side (A B only)\n"
      "  --world NAME|FILE        the game's world (A B only; default: the runs' of the champions, else v1)\n"
@@ -152,6 +160,15 @@ static const duel_help_entry duel_help_entries[] = {
      "  --fps F                  the video's frames per second, 1..120 (default 30)\n"
      "  --force                  replace an existing output that is not recognisably this command's own (it is\n"
      "                           refused otherwise); an output that is one of the inputs is refused even then\n"},
+    {"report",
+     "usage: duel_evolve report RUN --html DIR [--games all|top|none] [--embed] [--force]\n"
+     "A run's web pages (docs/render.md, \"Web pages\"): DIR/index.html with the run's curves and its dominance\n"
+     "ladder (with the ladder's results when RUN/ladder.csv has them), and each level's games against the level\n"
+     "below and every built-in strategy as duel pages in DIR/games/.\n"
+     "  --html DIR               where the pages go (created; not a run's or an experiment's directory)\n"
+     "  --games all|top|none     the games of every level (default), of the top level only, or none\n"
+     "  --embed                  the games inside index.html instead of pages of their own\n"
+     "  --force                  replace an existing page that is not recognisably one of duel_evolve's\n"},
     {"render-net",
      "usage: duel_evolve render-net BLOB|GENOME --out FILE.png [--force] [--min-weight W]\n"
      "The network drawn by Graphviz as a PNG, as the dot command draws it (docs/render.md).\n"

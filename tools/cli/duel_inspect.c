@@ -10,21 +10,12 @@
 #include "duel_ctrl.h"
 #include "duel_files.h"
 #include "duel_outputs.h"
+#include "duel_netgraph.h"
 #include "neat_config.h"
 
-/* Names of the duel's inputs (docs/duelsim.md, sensors in the spec's order;
- * rangefinder sector k is centred on heading + k * 72 degrees counter-clockwise)
- * and outputs. Networks of other sizes get generic names. */
-static const char *const duel_insp_inputs[DUEL_N_INPUTS] = {
-    "bias",           "food_ahead",  "food_left",       "food_back_left",   "food_back_right",
-    "food_right",     "robot_ahead", "robot_left",      "robot_back_left",  "robot_back_right",
-    "robot_right",    "energy_diff", "wall"};
-static const char *const duel_insp_outputs[DUEL_N_OUTPUTS] = {"turn_left", "turn_right", "forward"};
-
-#define DUEL_INSP_NAME 24 /* longest node name, with its terminator */
 #define DUEL_DOT_ROW 6     /* hidden nodes in a row of the drawing at most */
 
-/* A loaded blob and what both commands derive from it. */
+/* A loaded blob and its graph (duel_netgraph.h). */
 typedef struct duel_insp {
     const char *path;
     uint8_t *blob;
@@ -32,165 +23,14 @@ typedef struct duel_insp {
     void *mem;
     size_t mem_required;
     nrt_net net;
-    uint16_t *dst;       /* [n_conns] target node of each connection */
-    uint8_t *recurrent;  /* [n_conns] 1 if the connection lies on a directed cycle */
-    unsigned n_recurrent;
-    /* the drawing's layers (dot only): depth[v] of a hidden node is the
-     * longest path of feed-forward (not recurrent) connections from an
-     * input, at least 1; max_depth the largest */
-    int depth[NRT_MAX_NODES], max_depth;
-    /* dead[v]: a hidden node no input reaches or that reaches no output
-     * (what it computes never gets from the sensors to the motors) */
-    uint8_t dead[NRT_MAX_NODES];
-    unsigned n_dead;
-    int duel_names;      /* 13 inputs and 3 outputs: the duel's sensor and motor names */
-    uint32_t n_in[NRT_MAX_NODES], n_out[NRT_MAX_NODES]; /* connections into and out of each node */
+    duel_netgraph g;
 } duel_insp;
-
-/* Tarjan's strongly connected components over the network's nodes (a DFS;
- * depth at most NRT_MAX_NODES). */
-typedef struct duel_insp_scc {
-    duel_insp *x;
-    const uint32_t *first; /* [n_nodes + 1] outgoing connections of node v: by_src[first[v] .. first[v+1]) */
-    const uint32_t *by_src;
-    int index[NRT_MAX_NODES], low[NRT_MAX_NODES], comp[NRT_MAX_NODES];
-    uint8_t on_stack[NRT_MAX_NODES];
-    uint16_t stack[NRT_MAX_NODES];
-    int sp, next_index, n_comp;
-} duel_insp_scc;
-
-static void duel_insp_scc_visit(duel_insp_scc *s, unsigned v)
-{
-    uint32_t e;
-    s->index[v] = s->low[v] = s->next_index++;
-    s->stack[s->sp++] = (uint16_t)v;
-    s->on_stack[v] = 1;
-    for (e = s->first[v]; e < s->first[v + 1]; e++) {
-        unsigned w = s->x->dst[s->by_src[e]];
-        if (s->index[w] < 0) {
-            duel_insp_scc_visit(s, w);
-            if (s->low[w] < s->low[v])
-                s->low[v] = s->low[w];
-        } else if (s->on_stack[w] && s->index[w] < s->low[v]) {
-            s->low[v] = s->index[w];
-        }
-    }
-    if (s->low[v] == s->index[v]) {
-        unsigned w;
-        do {
-            w = s->stack[--s->sp];
-            s->on_stack[w] = 0;
-            s->comp[w] = s->n_comp;
-        } while (w != v);
-        s->n_comp++;
-    }
-}
-
-/* Marks the recurrent connections: source and target in one strongly
- * connected component, i.e. the target reaches the source again (a self
- * loop included). Independent of node or connection order. Returns 0 or -1
- * (out of memory). */
-static int duel_insp_recurrence(duel_insp *x)
-{
-    const nrt_net *n = &x->net;
-    duel_insp_scc *s = (duel_insp_scc *)calloc(1, sizeof *s);
-    uint32_t *first = (uint32_t *)calloc(n->n_nodes + 1u, sizeof *first);
-    uint32_t *by_src = (uint32_t *)malloc((n->n_conns + 1u) * sizeof *by_src);
-    uint32_t k, fill[NRT_MAX_NODES];
-    unsigned v;
-
-    if (s == NULL || first == NULL || by_src == NULL) {
-        free(s);
-        free(first);
-        free(by_src);
-        return -1;
-    }
-    for (k = 0; k < n->n_conns; k++)
-        first[n->src[k] + 1]++;
-    for (v = 0; v < n->n_nodes; v++) {
-        first[v + 1] += first[v];
-        fill[v] = first[v];
-    }
-    for (k = 0; k < n->n_conns; k++)
-        by_src[fill[n->src[k]]++] = k;
-    s->x = x;
-    s->first = first;
-    s->by_src = by_src;
-    for (v = 0; v < n->n_nodes; v++)
-        s->index[v] = -1;
-    for (v = 0; v < n->n_nodes; v++)
-        if (s->index[v] < 0)
-            duel_insp_scc_visit(s, v);
-    x->n_recurrent = 0;
-    for (k = 0; k < n->n_conns; k++) {
-        x->recurrent[k] = s->comp[n->src[k]] == s->comp[x->dst[k]];
-        x->n_recurrent += x->recurrent[k];
-    }
-    free(s);
-    free(first);
-    free(by_src);
-    return 0;
-}
-
-static int duel_insp_is_output(const duel_insp *x, unsigned v)
-{
-    return v >= x->net.n_inputs && v < (unsigned)(x->net.n_inputs + x->net.n_outputs);
-}
-
-/* Whether connection k sets the drawing's layers: a feed-forward one (not
- * on a cycle) that does not leave an output (the outputs are the top layer
- * whatever they feed back into). These form a DAG. */
-static int duel_insp_layering(const duel_insp *x, uint32_t k)
-{
-    return !x->recurrent[k] && !duel_insp_is_output(x, x->net.src[k]);
-}
-
-/* Depths and dead nodes (after duel_insp_recurrence). Relaxation over the
- * connections rather than a topological sort: at most n_nodes rounds of a
- * few hundred connections, and the same answer for any connection order. */
-static void duel_insp_layers(duel_insp *x)
-{
-    const nrt_net *n = &x->net;
-    uint8_t from_in[NRT_MAX_NODES], to_out[NRT_MAX_NODES];
-    unsigned v, round, n_io = (unsigned)(n->n_inputs + n->n_outputs);
-    uint32_t k;
-    int changed = 1;
-
-    for (v = 0; v < n->n_nodes; v++) {
-        x->depth[v] = v < n->n_inputs ? 0 : 1;
-        from_in[v] = v < n->n_inputs;
-        to_out[v] = duel_insp_is_output(x, v);
-    }
-    for (round = 0; changed && round <= n->n_nodes; round++) {
-        changed = 0;
-        for (k = 0; k < n->n_conns; k++) {
-            unsigned a = n->src[k], b = x->dst[k];
-            if (duel_insp_layering(x, k) && b >= n_io && x->depth[a] + 1 > x->depth[b]) {
-                x->depth[b] = x->depth[a] + 1;
-                changed = 1;
-            }
-            if (from_in[a] && !from_in[b])
-                from_in[b] = changed = 1;
-            if (to_out[b] && !to_out[a])
-                to_out[a] = changed = 1;
-        }
-    }
-    x->max_depth = 0;
-    x->n_dead = 0;
-    for (v = n_io; v < n->n_nodes; v++) {
-        if (x->depth[v] > x->max_depth)
-            x->max_depth = x->depth[v];
-        x->dead[v] = !from_in[v] || !to_out[v];
-        x->n_dead += x->dead[v];
-    }
-}
 
 static void duel_insp_free(duel_insp *x)
 {
     free(x->blob);
     free(x->mem);
-    free(x->dst);
-    free(x->recurrent);
+    duel_netgraph_free(&x->g);
     memset(x, 0, sizeof *x);
 }
 
@@ -199,8 +39,6 @@ static void duel_insp_free(duel_insp *x)
 static int duel_insp_open(duel_insp *x, const char *path)
 {
     nrt_net *n = &x->net;
-    uint32_t k;
-    unsigned j;
     int err;
 
     memset(x, 0, sizeof *x);
@@ -217,59 +55,12 @@ static int duel_insp_open(duel_insp *x, const char *path)
         duel_insp_free(x);
         return -1;
     }
-    x->dst = (uint16_t *)malloc((n->n_conns + 1u) * sizeof *x->dst);
-    x->recurrent = (uint8_t *)malloc(n->n_conns + 1u);
-    if (x->dst == NULL || x->recurrent == NULL) {
+    if (duel_netgraph_build(&x->g, n) != 0) {
         fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
         duel_insp_free(x);
         return -1;
     }
-    /* the connections into non-input node j end at end[j], start where j-1's end */
-    for (j = 0, k = 0; j < (unsigned)(n->n_nodes - n->n_inputs); j++)
-        for (; k < n->end[j]; k++)
-            x->dst[k] = (uint16_t)(n->n_inputs + j);
-    for (k = 0; k < n->n_conns; k++) {
-        x->n_out[n->src[k]]++;
-        x->n_in[x->dst[k]]++;
-    }
-    if (duel_insp_recurrence(x) != 0) {
-        fprintf(stderr, "duel_evolve: %s: out of memory\n", duel_esc(path));
-        duel_insp_free(x);
-        return -1;
-    }
-    duel_insp_layers(x);
-    x->duel_names = n->n_inputs == DUEL_N_INPUTS && n->n_outputs == DUEL_N_OUTPUTS;
     return 0;
-}
-
-static const char *duel_insp_kind(const duel_insp *x, unsigned v)
-{
-    if (v == 0)
-        return "bias";
-    if (v < x->net.n_inputs)
-        return "input";
-    return v < (unsigned)(x->net.n_inputs + x->net.n_outputs) ? "output" : "hidden";
-}
-
-/* Node v's name: the duel's sensor or motor name, else bias, inK, outK; hK
- * for hidden node index K. */
-static const char *duel_insp_name(const duel_insp *x, unsigned v, char buf[DUEL_INSP_NAME])
-{
-    unsigned n_in = x->net.n_inputs, n_out = x->net.n_outputs;
-    if (v == 0)
-        return "bias";
-    if (v < n_in) {
-        if (x->duel_names)
-            return duel_insp_inputs[v];
-        snprintf(buf, DUEL_INSP_NAME, "in%u", v);
-    } else if (v < n_in + n_out) {
-        if (x->duel_names)
-            return duel_insp_outputs[v - n_in];
-        snprintf(buf, DUEL_INSP_NAME, "out%u", v - n_in);
-    } else {
-        snprintf(buf, DUEL_INSP_NAME, "h%u", v);
-    }
-    return buf;
 }
 
 static uint32_t duel_insp_rd32(const uint8_t *p)
@@ -379,21 +170,21 @@ int duel_cmd_inspect(int argc, char **argv)
     printf("outputs: %u\n", (unsigned)n->n_outputs);
     printf("hidden: %u\n", (unsigned)n->n_hidden);
     printf("connections: %u\n", (unsigned)n->n_conns);
-    printf("recurrent: %u (on a directed cycle, self-loops included)\n", x.n_recurrent);
+    printf("recurrent: %u (on a directed cycle, self-loops included)\n", x.g.n_recurrent);
     printf("ram: %lu bytes (nrt_mem_required)\n", (unsigned long)x.mem_required);
-    printf("names: %s\n", x.duel_names ? "duel sensors and motors" : "generic (not the duel's 13 inputs and 3 outputs)");
+    printf("names: %s\n", x.g.duel_names ? "duel sensors and motors" : "generic (not the duel's 13 inputs and 3 outputs)");
     printf("nodes (index, kind, name, connections in and out):\n");
     for (v = 0; v < n->n_nodes; v++) {
-        char buf[DUEL_INSP_NAME];
-        printf("node %3u  %-6s  %-16s  in %3lu  out %3lu\n", v, duel_insp_kind(&x, v), duel_insp_name(&x, v, buf),
-               (unsigned long)x.n_in[v], (unsigned long)x.n_out[v]);
+        char buf[DUEL_NETGRAPH_NAME];
+        printf("node %3u  %-6s  %-16s  in %3lu  out %3lu\n", v, duel_netgraph_kind(&x.g, v), duel_netgraph_name(&x.g, v, buf),
+               (unsigned long)x.g.n_in[v], (unsigned long)x.g.n_out[v]);
     }
     printf("connections (index, source -> target, weight, raw Q3.12):\n");
     for (k = 0; k < n->n_conns; k++) {
-        char b1[DUEL_INSP_NAME], b2[DUEL_INSP_NAME];
+        char b1[DUEL_NETGRAPH_NAME], b2[DUEL_NETGRAPH_NAME];
         printf("conn %4lu  %-16s -> %-16s  weight %7.4f  raw %6d%s\n", (unsigned long)k,
-               duel_insp_name(&x, n->src[k], b1), duel_insp_name(&x, x.dst[k], b2),
-               n->weight[k] / 4096.0, (int)n->weight[k], x.recurrent[k] ? "  recurrent" : "");
+               duel_netgraph_name(&x.g, n->src[k], b1), duel_netgraph_name(&x.g, x.g.dst[k], b2),
+               n->weight[k] / 4096.0, (int)n->weight[k], x.g.recurrent[k] ? "  recurrent" : "");
     }
     duel_insp_free(&x);
     return rc;
@@ -456,8 +247,8 @@ static void duel_dot_legend(FILE *f, const duel_insp *x, const duel_dot_opts *o,
                "    <TR><TD COLSPAN=\"4\"><B>");
     duel_dot_html(f, x->path);
     fprintf(f, "</B>: %u inputs (bias included), %u outputs, %u hidden (%u dead), %u connections (%u recurrent)",
-            (unsigned)n->n_inputs, (unsigned)n->n_outputs, (unsigned)n->n_hidden, x->n_dead, (unsigned)n->n_conns,
-            x->n_recurrent);
+            (unsigned)n->n_inputs, (unsigned)n->n_outputs, (unsigned)n->n_hidden, x->g.n_dead, (unsigned)n->n_conns,
+            x->g.n_recurrent);
     if (o->min_weight > 0)
         fprintf(f, "; %lu drawn, those of |w| &lt; %g left out", (unsigned long)n_shown, o->min_weight);
     fprintf(f, "</TD></TR>\n    <TR>");
@@ -484,7 +275,7 @@ static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
     unsigned v, n_io = (unsigned)(n->n_inputs + n->n_outputs);
     uint32_t k, n_shown = 0;
     int d;
-    char buf[DUEL_INSP_NAME];
+    char buf[DUEL_NETGRAPH_NAME];
 
     for (k = 0; k < n->n_conns; k++)
         n_shown += (uint32_t)duel_dot_shown(x, k, o);
@@ -499,8 +290,8 @@ static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
     /* inputs in one rank at the bottom, in sensor order (invisible flat edges) */
     fprintf(f, "  subgraph inputs {\n    rank=source;\n");
     for (v = 0; v < n->n_inputs; v++)
-        fprintf(f, "    n%u [label=\"%s\", shape=box%s];\n", v, duel_insp_name(x, v, buf),
-                x->n_out[v] == 0 ? ", color=gray70, fontcolor=gray55" : "");
+        fprintf(f, "    n%u [label=\"%s\", shape=box%s];\n", v, duel_netgraph_name(&x->g, v, buf),
+                x->g.n_out[v] == 0 ? ", color=gray70, fontcolor=gray55" : "");
     if (n->n_inputs > 1) {
         fprintf(f, "    ");
         for (v = 0; v < n->n_inputs; v++)
@@ -511,7 +302,7 @@ static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
     /* outputs in one rank at the top */
     fprintf(f, "  subgraph outputs {\n    rank=sink;\n");
     for (v = n->n_inputs; v < n_io; v++)
-        fprintf(f, "    n%u [label=\"%s\", shape=box, style=bold];\n", v, duel_insp_name(x, v, buf));
+        fprintf(f, "    n%u [label=\"%s\", shape=box, style=bold];\n", v, duel_netgraph_name(&x->g, v, buf));
     if (n->n_outputs > 1) {
         fprintf(f, "    ");
         for (v = n->n_inputs; v < n_io; v++)
@@ -522,10 +313,10 @@ static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
     /* hidden nodes, a rank per depth, the layers the legend names; a depth
      * of many nodes in rows of DUEL_DOT_ROW stacked by invisible edges (one
      * row of 20 makes a picture five times as wide as high) */
-    for (d = 1; d <= x->max_depth; d++) {
+    for (d = 1; d <= x->g.max_depth; d++) {
         unsigned in_row = 0, row_first = 0;
         for (v = n_io; v < n->n_nodes; v++) {
-            if (x->depth[v] != d)
+            if (x->g.depth[v] != d)
                 continue;
             if (in_row == DUEL_DOT_ROW) {
                 fprintf(f, "  }\n  n%u -> n%u [style=invis];\n", row_first, v);
@@ -537,7 +328,7 @@ static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
             }
             in_row++;
             fprintf(f, "    n%u [label=\"%s\", shape=circle, width=0.3, fixedsize=false%s];\n", v,
-                    duel_insp_name(x, v, buf), x->dead[v] ? ", style=dashed, color=gray60, fontcolor=gray55" : "");
+                    duel_netgraph_name(&x->g, v, buf), x->g.dead[v] ? ", style=dashed, color=gray60, fontcolor=gray55" : "");
         }
         if (in_row > 0)
             fprintf(f, "  }\n");
@@ -546,15 +337,15 @@ static void duel_dot_write(FILE *f, const duel_insp *x, const duel_dot_opts *o)
     /* one edge per connection drawn; only the feed-forward ones (a DAG) set the ranks */
     for (k = 0; k < n->n_conns; k++) {
         int w = n->weight[k];
-        unsigned s = n->src[k], t = x->dst[k];
+        unsigned s = n->src[k], t = x->g.dst[k];
         const char *colour = w < 0 ? "red" : "black";
         if (!duel_dot_shown(x, k, o))
             continue;
-        if (x->dead[s] || x->dead[t]) /* its signal never gets from a sensor to a motor */
+        if (x->g.dead[s] || x->g.dead[t]) /* its signal never gets from a sensor to a motor */
             colour = w < 0 ? "\"#f0a0a0\"" : "gray60";
         fprintf(f, "  n%u -> n%u [penwidth=%.2f, color=%s, tooltip=\"%.4f\"%s%s];\n", s, t, duel_dot_pen(w), colour,
-                w / 4096.0, x->recurrent[k] ? ", style=dashed" : "",
-                duel_insp_layering(x, k) ? "" : ", constraint=false");
+                w / 4096.0, x->g.recurrent[k] ? ", style=dashed" : "",
+                duel_netgraph_layering(&x->g, k) ? "" : ", constraint=false");
     }
     fprintf(f, "}\n");
 }

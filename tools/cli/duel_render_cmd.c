@@ -17,6 +17,7 @@
 #include "duel_outputs.h"
 #include "duel_text.h"
 #include "duel_render.h"
+#include "duel_html.h"
 #include "duel_replay.h"
 #include "duel_trace.h"
 #include "duel_world_cfg.h"
@@ -26,7 +27,7 @@
 static const char duel_render_usage_line[] =
     "usage: duel_evolve render (LOG.lcm | A B [--food K|training] [--side west|east] [--world NAME|FILE]) --out DIR "
     "[--size 600] "
-    "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30] [--force]\n";
+    "[--every N] [--sensors] [--trails] [--video FILE.mp4] [--fps 30] [--html FILE.html] [--force]\n";
 
 /* "--opt N" with lo <= N <= hi. 0, or -1 after one line on stderr. */
 static int duel_rc_int(const char *cmd, const char *opt, const char *v, long lo, long hi, int *out)
@@ -373,9 +374,32 @@ static int duel_rc_video(const char *ffmpeg, const char *dir, unsigned n, int fp
     return 0;
 }
 
+/* The game's lines: food, sides and outcome; the world and the networks' step. */
+static void duel_rc_say_game(const duel_replay *rep, int n_pos, const char *step_w, const char *step_e)
+{
+    const duel_frame *last = &rep->frames[rep->n - 1];
+    char esc_w[1100], esc_e[1100];
+    if (rep->food_config < 0)
+        printf("training food, west %s, east %s: ", duel_text_escape(rep->west, esc_w, sizeof esc_w),
+               duel_text_escape(rep->east, esc_e, sizeof esc_e));
+    else
+        printf("food configuration %d, west %s, east %s: ", rep->food_config,
+               duel_text_escape(rep->west, esc_w, sizeof esc_w), duel_text_escape(rep->east, esc_e, sizeof esc_e));
+    printf("%s after %u steps\n", duel_outcome_text(last->ev.outcome), (unsigned)last->t);
+    /* what it was played in (issue 49): the world, and each side's network step when it was played here */
+    printf("world %s (identity %016llx)", duel_rules_name(&rep->rules) != NULL ? duel_rules_name(&rep->rules) : "custom",
+           (unsigned long long)duel_rules_id(&rep->rules));
+    if (n_pos == 2)
+        printf("; network step: west %s, east %s", step_w, step_e);
+    else if (rep->step[0] != DUEL_TRACE_STEP_UNKNOWN || rep->step[1] != DUEL_TRACE_STEP_UNKNOWN)
+        printf("; network step: west %s, east %s", duel_trace_step_name(rep->step[0]),
+               duel_trace_step_name(rep->step[1])); /* as the log's net messages say */
+    printf("\n");
+}
+
 int duel_cmd_render(int argc, char **argv)
 {
-    const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL, *world_arg = NULL;
+    const char *pos[3] = {NULL, NULL, NULL}, *dir = NULL, *video = NULL, *world_arg = NULL, *html = NULL;
     duel_rules world = *duel_rules_v1();
     char step_w[16] = "", step_e[16] = "";
     int found = 0;
@@ -389,6 +413,7 @@ int duel_cmd_render(int argc, char **argv)
     duel_render_info info;
     size_t k;
     double t0, secs;
+    long long html_bytes = 0;
 
     if (argc == 0) {
         fputs(duel_render_usage_line, stderr);
@@ -418,13 +443,15 @@ int duel_cmd_render(int argc, char **argv)
         }
         if (i + 1 >= argc) {
             static const char *const takes[] = {"--out", "--video", "--size", "--every", "--fps", "--food", "--side",
-                                                "--world", NULL};
+                                                "--world", "--html", NULL};
             return duel_cli_missing_value("render", opt, takes);
         }
         if (strcmp(opt, "--out") == 0) {
             dir = argv[++i];
         } else if (strcmp(opt, "--video") == 0) {
             video = argv[++i];
+        } else if (strcmp(opt, "--html") == 0) {
+            html = argv[++i];
         } else if (strcmp(opt, "--size") == 0) {
             if (duel_rc_int("render", opt, argv[++i], DUEL_RENDER_MIN_SIZE, DUEL_RENDER_MAX_SIZE, &size) != 0)
                 return 2;
@@ -456,8 +483,12 @@ int duel_cmd_render(int argc, char **argv)
             return 2;
         }
     }
-    if (n_pos == 0 || dir == NULL) {
+    if (n_pos == 0 || (dir == NULL && html == NULL)) {
         fputs(duel_render_usage_line, stderr);
+        return 2;
+    }
+    if (dir == NULL && video != NULL) {
+        fprintf(stderr, "duel_evolve: render: --video is made from the frames: it needs --out DIR\n");
         return 2;
     }
     if (n_pos == 1 && game_opts) {
@@ -484,6 +515,10 @@ int duel_cmd_render(int argc, char **argv)
             return 2;
         }
     }
+    if (html != NULL && duel_html_allowed("render", "--html", html, force, pos, 2, err, sizeof err) != 0) {
+        fprintf(stderr, "duel_evolve: %s\n", duel_esc_msg(err));
+        return 2;
+    }
     /* the game, then the directory: bad input leaves nothing behind */
     duel_replay_init(&rep);
     if (n_pos == 1 ? duel_rc_read_log(&rep, pos[0]) : duel_rc_play(&rep, &world, pos[0], pos[1], food, a_west, step_w, step_e)) {
@@ -494,6 +529,29 @@ int duel_cmd_render(int argc, char **argv)
         fprintf(stderr, "duel_evolve: render: %s: no frame to draw\n", pos[0]);
         duel_replay_free(&rep);
         return 2;
+    }
+    if (html != NULL) {
+        char title[600];
+        struct stat st;
+        snprintf(title, sizeof title, "%s vs %s", rep.west, rep.east);
+        rc = duel_html_write_duel("render", html, &rep, title, force, pos, 2, err, sizeof err);
+        if (rc != 0) {
+            fprintf(stderr, "duel_evolve: render: %s\n", duel_esc_msg(err));
+            duel_replay_free(&rep);
+            return rc;
+        }
+        if (dir == NULL) {
+            duel_rc_say_game(&rep, n_pos, step_w, step_e);
+            printf("page: %s (%lld bytes, %u frames)\n", html, stat(html, &st) == 0 ? (long long)st.st_size : 0LL,
+                   (unsigned)rep.n);
+            duel_replay_free(&rep);
+            if (fflush(stdout) != 0) {
+                fprintf(stderr, "duel_evolve: render: cannot write the output: %s\n", strerror(errno));
+                return 1;
+            }
+            return 0;
+        }
+        html_bytes = stat(html, &st) == 0 ? (long long)st.st_size : 0LL;
     }
     if (strlen(dir) + 32 > sizeof path) {
         fprintf(stderr, "duel_evolve: render: %s: name too long\n", duel_esc(dir));
@@ -564,24 +622,7 @@ int duel_cmd_render(int argc, char **argv)
         rc = 1;
 
     if (rc == 0) {
-        const duel_frame *last = &rep.frames[rep.n - 1];
-        char esc_w[1100], esc_e[1100];
-        if (rep.food_config < 0)
-            printf("training food, west %s, east %s: ", duel_text_escape(rep.west, esc_w, sizeof esc_w),
-                   duel_text_escape(rep.east, esc_e, sizeof esc_e));
-        else
-            printf("food configuration %d, west %s, east %s: ", rep.food_config, duel_text_escape(rep.west, esc_w, sizeof esc_w),
-                   duel_text_escape(rep.east, esc_e, sizeof esc_e));
-        printf("%s after %u steps\n", duel_outcome_text(last->ev.outcome), (unsigned)last->t);
-        /* what it was played in (issue 49): the world, and each side's network step when it was played here */
-        printf("world %s (identity %016llx)", duel_rules_name(&rep.rules) != NULL ? duel_rules_name(&rep.rules) : "custom",
-               (unsigned long long)duel_rules_id(&rep.rules));
-        if (n_pos == 2)
-            printf("; network step: west %s, east %s", step_w, step_e);
-        else if (rep.step[0] != DUEL_TRACE_STEP_UNKNOWN || rep.step[1] != DUEL_TRACE_STEP_UNKNOWN)
-            printf("; network step: west %s, east %s", duel_trace_step_name(rep.step[0]),
-                   duel_trace_step_name(rep.step[1])); /* as the log's net messages say */
-        printf("\n");
+        duel_rc_say_game(&rep, n_pos, step_w, step_e);
         if (every == 1)
             printf("%u frames of %dx%d: %s/frame-00000.png .. frame-%05u.png (every step and the final state)\n",
                    n_out, size, size, dir, n_out - 1);
@@ -596,6 +637,8 @@ int duel_cmd_render(int argc, char **argv)
             else
                 printf("video: %s (%u frames at %d frames/s)\n", video, n_out, fps);
         }
+        if (html != NULL)
+            printf("page: %s (%lld bytes, %u frames)\n", html, html_bytes, (unsigned)rep.n);
     }
     duel_replay_free(&rep);
     if (fflush(stdout) != 0 && rc == 0) {

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "duel_replay.h"
+#include "duel_trace.h"
 
 void duel_replay_init(duel_replay *r)
 {
@@ -16,7 +17,12 @@ void duel_replay_init(duel_replay *r)
 
 void duel_replay_free(duel_replay *r)
 {
+    int s;
     free(r->frames);
+    for (s = 0; s < 2; s++) {
+        free(r->net[s].mem);
+        free(r->net[s].hidden);
+    }
     duel_replay_init(r);
 }
 
@@ -25,6 +31,7 @@ static int duel_replay_grow(duel_replay *r)
 {
     duel_frame *f;
     size_t cap;
+    int s;
     if (r->n < r->cap)
         return 0;
     cap = r->cap ? 2 * r->cap : 256;
@@ -34,7 +41,46 @@ static int duel_replay_grow(duel_replay *r)
     if (f == NULL)
         return -ENOMEM;
     r->frames = f;
+    for (s = 0; s < 2; s++) {
+        size_t h = r->net[s].shape.n_hidden;
+        nrt_q15 *a;
+        if (h == 0)
+            continue;
+        if (cap > (size_t)-1 / sizeof *a / h)
+            return -ENOMEM;
+        a = (nrt_q15 *)realloc(r->net[s].hidden, cap * h * sizeof *a);
+        if (a == NULL)
+            return -ENOMEM;
+        r->net[s].hidden = a;
+    }
     r->cap = cap;
+    return 0;
+}
+
+/* A copy of net's shape (counts, weights, sources, ends) into rn, for
+ * drawing after the controller is closed. 0 or -ENOMEM. */
+static int duel_replay_net_copy(duel_replay_net *rn, const nrt_net *net)
+{
+    size_t n_conns = net->n_conns, n_end = (size_t)net->n_outputs + net->n_hidden;
+    size_t w = n_conns * sizeof(nrt_w12), sz = n_conns * sizeof(uint16_t), e = n_end * sizeof(uint16_t);
+    uint8_t *m = (uint8_t *)malloc(w + sz + e + 1);
+    if (m == NULL)
+        return -ENOMEM;
+    memset(&rn->shape, 0, sizeof rn->shape);
+    rn->shape.n_inputs = net->n_inputs;
+    rn->shape.n_outputs = net->n_outputs;
+    rn->shape.n_hidden = net->n_hidden;
+    rn->shape.n_nodes = net->n_nodes;
+    rn->shape.n_conns = net->n_conns;
+    rn->shape.step = net->step;
+    rn->shape.weight = (nrt_w12 *)(void *)m;
+    rn->shape.src = (uint16_t *)(void *)(m + w);
+    rn->shape.end = (uint16_t *)(void *)(m + w + sz);
+    memcpy(rn->shape.weight, net->weight, w);
+    memcpy(rn->shape.src, net->src, sz);
+    memcpy(rn->shape.end, net->end, e);
+    rn->mem = m;
+    rn->hidden = NULL;
     return 0;
 }
 
@@ -51,6 +97,7 @@ int duel_replay_push(duel_replay *r, const duel_frame *f)
  * game cannot be stopped from the callback, so later frames are dropped). */
 typedef struct duel_replay_rec {
     duel_replay *r;
+    const duel_controller *c[2]; /* west, east: whose hidden activations are kept */
     int err;
 } duel_replay_rec;
 
@@ -59,6 +106,7 @@ static void duel_replay_trace(void *ud, const duel_world *w, const nrt_q15 in[2]
 {
     duel_replay_rec *rec = (duel_replay_rec *)ud;
     duel_frame *f;
+    int s;
     if (rec->err)
         return;
     rec->err = duel_replay_grow(rec->r);
@@ -70,6 +118,14 @@ static void duel_replay_trace(void *ud, const duel_world *w, const nrt_q15 in[2]
     memcpy(f->in, in, sizeof f->in);
     memcpy(f->out, out, sizeof f->out);
     f->ev = *ev;
+    /* the networks have stepped: act[cur] holds this step's activations, inputs then outputs then hidden */
+    for (s = 0; s < 2; s++) {
+        const nrt_net *net = rec->c[s]->net;
+        size_t h = rec->r->net[s].shape.n_hidden;
+        if (net != NULL && h > 0)
+            memcpy(&rec->r->net[s].hidden[(rec->r->n - 1) * h], net->act[net->cur] + net->n_inputs + net->n_outputs,
+                   h * sizeof(nrt_q15));
+    }
 }
 
 int duel_replay_from_game(duel_replay *r, duel_controller *west, duel_controller *east, int food_config)
@@ -83,13 +139,25 @@ int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_co
     duel_replay_rec rec;
     duel_result res;
     duel_frame *last, *fin;
-    int err;
+    int err, s;
 
     r->n = 0;
     r->food_config = food_config;
     r->rules = rules != NULL ? *rules : *duel_rules_v1();
     rec.r = r;
+    rec.c[0] = west;
+    rec.c[1] = east;
     rec.err = 0;
+    r->step[0] = duel_trace_step_of(west);
+    r->step[1] = duel_trace_step_of(east);
+    for (s = 0; s < 2; s++) {
+        free(r->net[s].mem);
+        free(r->net[s].hidden);
+        memset(&r->net[s], 0, sizeof r->net[s]);
+        if (rec.c[s]->net != NULL && duel_replay_net_copy(&r->net[s], rec.c[s]->net) != 0)
+            return -ENOMEM;
+    }
+    r->cap = 0; /* the hidden arrays grow with the frames from here */
     err = duel_play_rules(&r->rules, west, east, food_config, &res, duel_replay_trace, &rec);
     if (!err)
         err = rec.err;
@@ -106,6 +174,9 @@ int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_co
     last = &r->frames[r->n - 1];
     fin = &r->frames[r->n];
     memset(fin, 0, sizeof *fin);
+    for (s = 0; s < 2; s++)
+        if (r->net[s].shape.n_hidden > 0)
+            memset(&r->net[s].hidden[r->n * r->net[s].shape.n_hidden], 0, r->net[s].shape.n_hidden * sizeof(nrt_q15));
     fin->w = last->w;
     duel_world_step(&fin->w, last->out[DUEL_WEST], last->out[DUEL_EAST], NULL);
     fin->t = fin->w.t;

@@ -18,6 +18,16 @@ typedef struct duel_frame {
     duel_event ev;
 } duel_frame;
 
+/* A side's network as it played: its shape (a copy of the loaded net's
+ * counts, weights, sources and ends; no activations) and the hidden nodes'
+ * activations after each step. Recorded from a live game only (a log holds
+ * no network): shape.n_nodes 0 for a builtin or a log. */
+typedef struct duel_replay_net {
+    nrt_net shape;    /* weight, src and end point into mem; act and order are NULL */
+    void *mem;
+    nrt_q15 *hidden;  /* [frame * shape.n_hidden + k]: hidden node k after frame t's step (0 at the final frame) */
+} duel_replay_net;
+
 typedef struct duel_replay {
     duel_frame *frames;
     size_t n, cap;
@@ -26,6 +36,7 @@ typedef struct duel_replay {
     char west[256], east[256]; /* the controllers' names, for captions */
     int step[2];              /* how each side stepped, from a log's net messages: -1 builtin, 0 sync,
                                * 1 propagate, -2 not recorded (duel_trace.h's codes; docs/lcm.md) */
+    duel_replay_net net[2];   /* west, east: the networks of a live game (for the web page) */
 } duel_replay;
 
 void duel_replay_init(duel_replay *r);
