@@ -198,6 +198,21 @@ set_tests_properties(tools/duel_run_faults PROPERTIES TIMEOUT 600)
 neat_add_test(render test_render)
 target_link_libraries(test_render PRIVATE duelrender)
 set_tests_properties(render/test_render PROPERTIES ENVIRONMENT "${NEAT_RENDER_ENV}")
+# the web pages' writer (escaping, base64, a page with hostile names); the pages in Chromium, headless, through
+# chromedriver and Debian's python3-selenium: every page kind, drawn state against play --trace and the runtime's
+# hidden activations (the Python package steps them), no console message, no request, hostile names as text
+neat_add_test(render test_html)
+target_link_libraries(test_html PRIVATE duelhtml)
+if(NEAT_PYTHON)
+  add_test(NAME render/html_browser
+           COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/render/html_browser.py $<TARGET_FILE:duel_evolve>
+                   $<TARGET_FILE:duel_bench> ${CMAKE_CURRENT_SOURCE_DIR}/tools/fixtures/experiment-tiny
+                   ${PROJECT_BINARY_DIR}/python ${PROJECT_BINARY_DIR}/tests/html-screenshots)
+  set_tests_properties(render/html_browser PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+endif()
+add_test(NAME render/html_cli
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render/html_cli.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:duel_bench>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/tools/fixtures/experiment-tiny)
 foreach(check frames deterministic lcm video video-kill render-net bad-input)
   add_test(NAME render/duel_render_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render/render_cli.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:duel_bench>

@@ -2,6 +2,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "duel_cli.h"
 #include "duel_html.h"
@@ -36,24 +37,26 @@ static void duel_exp_wrote(void *ud, const char *path, size_t bytes)
     (*(unsigned long *)ud)++;
 }
 
-/* The report's web pages in DIR/report/html/ (duel_html_run.c). */
+/* The report's web pages in DIR/report/html/ (duel_html_run.c), from inside DIR, where the report left us (it
+ * works in its directory, under its lock): the pages name the directory by its absolute path. */
 static int duel_exp_report_html(const char *dir, duel_html_report *o)
 {
-    char out[4200], msg[2048];
+    char here[4096], out[4200], shown[4200], msg[2048];
     unsigned long pages = 0;
     int st;
-    if ((size_t)snprintf(out, sizeof out, "%s/report/html", dir) >= sizeof out) {
+    if (getcwd(here, sizeof here) == NULL || (size_t)snprintf(out, sizeof out, "%s/report/html", here) >= sizeof out) {
         fprintf(stderr, "duel_evolve: experiment report: %s: name too long\n", duel_esc(dir));
         return 2;
     }
+    snprintf(shown, sizeof shown, "%s/report/html", dir);
     o->wrote = duel_exp_wrote;
     o->ud = &pages;
-    st = duel_html_experiment_report(dir, out, o, msg, sizeof msg);
+    st = duel_html_experiment_report(here, out, o, msg, sizeof msg);
     if (st != 0) {
         fprintf(stderr, "duel_evolve: experiment report: %s\n", duel_esc_msg(msg));
         return st;
     }
-    duel_report_html_say(out, pages, o);
+    duel_report_html_say(shown, pages, o);
     return 0;
 }
 

@@ -97,7 +97,6 @@ int duel_replay_push(duel_replay *r, const duel_frame *f)
  * game cannot be stopped from the callback, so later frames are dropped). */
 typedef struct duel_replay_rec {
     duel_replay *r;
-    const duel_controller *c[2]; /* west, east: whose hidden activations are kept */
     int err;
 } duel_replay_rec;
 
@@ -106,7 +105,6 @@ static void duel_replay_trace(void *ud, const duel_world *w, const nrt_q15 in[2]
 {
     duel_replay_rec *rec = (duel_replay_rec *)ud;
     duel_frame *f;
-    int s;
     if (rec->err)
         return;
     rec->err = duel_replay_grow(rec->r);
@@ -118,14 +116,25 @@ static void duel_replay_trace(void *ud, const duel_world *w, const nrt_q15 in[2]
     memcpy(f->in, in, sizeof f->in);
     memcpy(f->out, out, sizeof f->out);
     f->ev = *ev;
-    /* the networks have stepped: act[cur] holds this step's activations, inputs then outputs then hidden */
-    for (s = 0; s < 2; s++) {
-        const nrt_net *net = rec->c[s]->net;
-        size_t h = rec->r->net[s].shape.n_hidden;
-        if (net != NULL && h > 0)
-            memcpy(&rec->r->net[s].hidden[(rec->r->n - 1) * h], net->act[net->cur] + net->n_inputs + net->n_outputs,
-                   h * sizeof(nrt_q15));
+}
+
+/* The hidden activations of each step, by stepping side s's network again
+ * through the recorded inputs: the game may have run it in another form
+ * (nrt_dense's, whose state lives outside the nrt_net), and nrt_step gives
+ * the same values bit for bit, which the recorded outputs confirm. 0, or
+ * -EIO when an output differs (it cannot, unless the network was changed). */
+static int duel_replay_hidden(duel_replay *r, nrt_net *net, int s)
+{
+    size_t t, h = r->net[s].shape.n_hidden;
+    nrt_reset(net);
+    for (t = 0; t < r->n; t++) {
+        nrt_step(net, r->frames[t].in[s], NULL);
+        if (memcmp(nrt_outputs(net), r->frames[t].out[s], sizeof r->frames[t].out[s]) != 0)
+            return -EIO;
+        if (h > 0)
+            memcpy(&r->net[s].hidden[t * h], net->act[net->cur] + net->n_inputs + net->n_outputs, h * sizeof(nrt_q15));
     }
+    return 0;
 }
 
 int duel_replay_from_game(duel_replay *r, duel_controller *west, duel_controller *east, int food_config)
@@ -145,16 +154,15 @@ int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_co
     r->food_config = food_config;
     r->rules = rules != NULL ? *rules : *duel_rules_v1();
     rec.r = r;
-    rec.c[0] = west;
-    rec.c[1] = east;
     rec.err = 0;
     r->step[0] = duel_trace_step_of(west);
     r->step[1] = duel_trace_step_of(east);
     for (s = 0; s < 2; s++) {
+        duel_controller *c = s == 0 ? west : east;
         free(r->net[s].mem);
         free(r->net[s].hidden);
         memset(&r->net[s], 0, sizeof r->net[s]);
-        if (rec.c[s]->net != NULL && duel_replay_net_copy(&r->net[s], rec.c[s]->net) != 0)
+        if (c->net != NULL && duel_replay_net_copy(&r->net[s], c->net) != 0)
             return -ENOMEM;
     }
     r->cap = 0; /* the hidden arrays grow with the frames from here */
@@ -163,6 +171,9 @@ int duel_replay_from_game_rules(duel_replay *r, const duel_rules *rules, duel_co
         err = rec.err;
     if (!err)
         err = duel_replay_grow(r);
+    for (s = 0; s < 2 && !err; s++)
+        if ((s == 0 ? west : east)->net != NULL)
+            err = duel_replay_hidden(r, (s == 0 ? west : east)->net, s);
     if (err) {
         r->n = 0;
         return err;

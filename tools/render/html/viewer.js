@@ -147,7 +147,7 @@
     for (let k = 0; k < net.H; k++) a.push(m.sides[s].hid[f * net.H + k] / 32768);
     return a;
   }
-  function eventText(m, e) {
+  function eventText(e) {
     const who = (s) => (s === 0 || s === 1 ? SIDES[s] : 'both');
     if (e[1] === 'eat') return who(e[2]) + ' eats food ' + fmt(e[3]);
     if (e[1] === 'collision') return e[2] === -1 ? 'collision (draw)' : 'collision (' + who(e[2]) + ')';
@@ -187,7 +187,8 @@
     const edges = net.conns.map((c) => {
       const [x1, y1] = xy[c.src], [x2, y2] = xy[c.dst];
       let d;
-      if (c.src === c.dst) d = 'M' + (x1 - 5) + ',' + (y1 - 7) + ' C' + (x1 - 24) + ',' + (y1 - 36) + ' ' + (x1 + 24) + ',' + (y1 - 36) + ' ' + (x1 + 5) + ',' + (y1 - 7);
+      // A self-loop goes out sideways: above and below a node are its label and its inputs.
+      if (c.src === c.dst) d = 'M' + (x1 + 7) + ',' + (y1 - 5) + ' C' + (x1 + 34) + ',' + (y1 - 24) + ' ' + (x1 + 34) + ',' + (y1 + 24) + ' ' + (x1 + 7) + ',' + (y1 + 5);
       else if (y1 > y2 + 1 && !c.rec) d = 'M' + x1 + ',' + y1 + ' L' + x2 + ',' + y2;
       else {
         // Backward, sideways or recurrent: bow the line out so it does not run along a row.
@@ -218,7 +219,7 @@
         nd.tip.textContent = net.names[v] + ' = ' + a.toFixed(3) + (net.dead[v] ? ' (dead)' : '');
       }
       // A connection is as visible as its source's activation: the eye follows the signal.
-      net.conns.forEach((c, i) => edges[i].setAttribute('stroke-opacity', (0.12 + 0.88 * Math.min(1, Math.abs(act[c.src]))).toFixed(2)));
+      net.conns.forEach((c, i) => edges[i].setAttribute('stroke-opacity', (0.18 + 0.82 * Math.min(1, Math.abs(act[c.src]))).toFixed(2)));
     };
   }
 
@@ -343,7 +344,7 @@
 
     const evList = h('ul', {class: 'events'});
     const evItems = m.events.map((e) => {
-      const li = h('li', {text: 'step ' + e[0] + ': ' + eventText(m, e), title: 'go to the frame after it'});
+      const li = h('li', {text: 'step ' + e[0] + ': ' + eventText(e), title: 'go to the frame after it'});
       li.addEventListener('click', () => goto(Math.min(n - 1, e[0] + 1)));
       evList.append(li);
       return li;
@@ -368,7 +369,7 @@
       energyBase = null;
     }
 
-    function drawBoard(rb, mask, f) {
+    function drawBoard(rb, mask) {
       const c = ctx, W = g.W, sc = g.sc, e = g.e;
       c.setTransform(1, 0, 0, 1, 0, 0);
       c.fillStyle = COL.edge; c.fillRect(0, 0, W, W);
@@ -404,7 +405,7 @@
           const r = rb[s];
           for (let k = 0; k < 5; k++) {
             for (const [off, range, col] of [[1, w.food_range, COL.food], [6, w.robot_range, COL.side[1 - s]]]) {
-              const v = m.inp[26 * f + 13 * s + off + k] / 32768;
+              const v = m.inp[26 * t + 13 * s + off + k] / 32768;
               if (!(v > 0)) continue;
               const dist = (1 - v) * range, a1 = r.heading + (2 * k - 1) * Math.PI / 5, a2 = a1 + 2 * Math.PI / 5;
               c.beginPath(); c.arc(px(r.x), py(r.y), Math.max(0.5, dist * sc), -a2, -a1);
@@ -475,8 +476,8 @@
     }
 
     function render() {
-      const f = netFrame(m, t), rb = [robot(m, t, 0), robot(m, t, 1)], mask = m.food[t];
-      drawBoard(rb, mask, t);
+      const rb = [robot(m, t, 0), robot(m, t, 1)], mask = m.food[t];
+      drawBoard(rb, mask);
       drawEnergy();
       const act = panels.map((p) => p(t));
       tLabel.textContent = 'step ' + t + ' / ' + (n - 1) + (t === n - 1 ? ' (final state)' : '');
@@ -531,13 +532,15 @@
 
     // Redraw when the column or the pixel ratio changes (zoom, moving to another screen).
     let seen = '';
-    const ro = new ResizeObserver(() => {
+    const onResize = () => {
       const k = boardWrap.clientWidth + 'x' + energyWrap.clientWidth + 'x' + window.devicePixelRatio;
       if (k !== seen) { seen = k; layout(); render(); }
-    });
+    };
+    const ro = new ResizeObserver(onResize);
     layout();
     render();
     ro.observe(boardWrap); ro.observe(energyWrap);
+    window.addEventListener('resize', onResize);
 
     return {
       frames: n, goto, key,
@@ -546,7 +549,7 @@
         const i = clamp(Math.floor(px(+x)), 0, g.W - 1), j = clamp(Math.floor(py(+y)), 0, g.W - 1);
         return Array.from(ctx.getImageData(i, j, 1, 1).data);
       },
-      destroy() { pause(); ro.disconnect(); },
+      destroy() { pause(); ro.disconnect(); window.removeEventListener('resize', onResize); },
     };
   }
 
@@ -622,7 +625,8 @@
     const W = 480, H = 210, L = 46, R = 12, T = 10, B = 24;
     let x0 = Math.min(...all.map((p) => p[0])), x1 = Math.max(...all.map((p) => p[0]));
     if (x1 === x0) x1 = x0 + 1;
-    const yt = ticks(Math.min(0, ...all.map((p) => p[1])), Math.max(...all.map((p) => p[1])) || 1, 4);
+    const lo = Math.min(0, ...all.map((p) => p[1])), hi = Math.max(0, ...all.map((p) => p[1]));
+    const yt = ticks(lo, hi > lo ? hi : lo + 1, 4);
     const y0 = yt[0], y1 = yt[yt.length - 1];
     const X = (v) => L + (W - L - R) * (v - x0) / (x1 - x0), Y = (v) => T + (H - T - B) * (1 - (v - y0) / (y1 - y0));
     const svg = sv('svg', {viewBox: '0 0 ' + W + ' ' + H, class: 'chart-svg', role: 'img', 'aria-label': title});
@@ -631,17 +635,20 @@
       sv('text', {x: L - 5, y: Y(v) + 3, 'text-anchor': 'end', text: fmt(v)}, svg);
     }
     for (const v of ticks(x0, x1, 5).filter((v) => v >= x0 && v <= x1)) sv('text', {x: X(v), y: H - 6, 'text-anchor': 'middle', text: fmt(v)}, svg);
-    for (const s of series) {
-      sv('polyline', {points: s.pts.map((p) => X(p[0]).toFixed(1) + ',' + Y(p[1]).toFixed(1)).join(' '), fill: 'none',
-        stroke: s.color, 'stroke-width': 1.4, 'stroke-dasharray': s.dash ? '5 3' : null}, svg);
-    }
+    const lines = series.map((s) => sv('polyline', {points: s.pts.map((p) => X(p[0]).toFixed(1) + ',' + Y(p[1]).toFixed(1)).join(' '),
+      fill: 'none', stroke: s.color, 'stroke-width': 1.4, 'stroke-dasharray': s.dash ? '5 3' : null}, svg));
     const cursor = sv('line', {y1: T, y2: H - B, class: 'cursor', visibility: 'hidden'}, svg);
     const tip = h('div', {class: 'tip', hidden: ''});
     fig.append(h('div', {class: 'chart-area'}, [svg, tip]));
-    fig.append(h('div', {class: 'legend'}, series.map((s) => {
+    // Pointing at a legend entry brings its line forward: overlaid runs are otherwise a tangle.
+    const focus = (i) => lines.forEach((l, j) => { l.classList.toggle('hi', j === i); l.classList.toggle('dim', i >= 0 && j !== i); });
+    fig.append(h('div', {class: 'legend'}, series.map((s, i) => {
       const k = h('i', {class: 'key' + (s.dash ? ' dash' : '')});
       k.style.borderColor = s.color;
-      return h('span', {}, [k, clean(s.label)]);
+      const e = h('span', {}, [k, clean(s.label)]);
+      e.addEventListener('pointerenter', () => focus(i));
+      e.addEventListener('pointerleave', () => focus(-1));
+      return e;
     })));
     const nearest = (pts, x) => {
       let lo = 0, hi = pts.length - 1;
