@@ -10,6 +10,7 @@ PKGS="$PKGS gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi qem
 PKGS="$PKGS gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc" # RISC-V firmware
 PKGS="$PKGS valgrind"                                                               # instruction counts (bench/)
 PKGS="$PKGS graphviz fonts-dejavu-core libosmesa6-dev libpng-dev ffmpeg"            # network pictures, replays, videos
+PKGS="$PKGS chromium chromium-driver python3-selenium"                              # the web pages' browser tests
 PKGS="$PKGS liblcm-dev liblcm-bin liblcm-java libglib2.0-dev"                       # LCM nodes and logs
 PKGS="$PKGS python3-matplotlib python3-pip"                                         # the experiment's figures; pip
 PKGS="$PKGS python3-venv python3-dev"                                               # the Python package (python/)

@@ -884,7 +884,7 @@ static void html_write_exp(FILE *f, const void *ctx)
     html_csv_table(f, e->table1, e->table1_len, p->method);
     fputs(",\"figures\":[", f);
     if (p->method == NULL) {
-        html_figure(f, e->report, "fig11-levels.svg", "Figure 11: dominance levels over generations, per method", &first);
+        html_figure(f, e->report, "fig11-levels.svg", "Figure 11: what a difference in dominance level means, in games won", &first);
         html_figure(f, e->report, "fig7-complexity.svg", "Figure 7: the dominants' complexity over generations", &first);
     } else {
         char fig[400], cap2[400];

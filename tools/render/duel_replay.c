@@ -1,4 +1,4 @@
-/* duel_replay.c - a game recorded frame by frame (duel_replay.h) from a live game, through duel_play's trace callback. */
+/* duel_replay.c - a game recorded frame by frame (duel_replay.h) from a live game, through duel_play's trace callback, with each network's shape and hidden activations (for the web pages). */
 #include <assert.h>
 #include <errno.h>
 #include <stdlib.h>
