@@ -210,6 +210,11 @@ if(NEAT_PYTHON)
                    ${PROJECT_BINARY_DIR}/python ${PROJECT_BINARY_DIR}/tests/html-screenshots)
   set_tests_properties(render/html_browser PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
 endif()
+# the same pages in Firefox ESR over WebDriver BiDi, where it is installed (scripts/deps.sh does not: skipped)
+add_test(NAME render/html_firefox
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/render/html_firefox.py $<TARGET_FILE:duel_evolve>
+                 $<TARGET_FILE:duel_bench> ${CMAKE_CURRENT_SOURCE_DIR}/tools/fixtures/experiment-tiny)
+set_tests_properties(render/html_firefox PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
 add_test(NAME render/html_cli
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render/html_cli.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:duel_bench>
                  ${CMAKE_CURRENT_SOURCE_DIR}/tools/fixtures/experiment-tiny)

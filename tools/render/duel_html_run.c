@@ -107,7 +107,9 @@ static void html_field(FILE *f, const char *s, size_t n)
         memcpy(buf, s, n);
         buf[n] = '\0';
         v = strtod(buf, &end);
-        if (*end == '\0' && (buf[0] == '-' || (buf[0] >= '0' && buf[0] <= '9')) && v == v && v - v == 0) {
+        /* a decimal number only: not "0x1f" (hexadecimal to strtod), "inf" or "nan" */
+        if (*end == '\0' && (buf[0] == '-' || (buf[0] >= '0' && buf[0] <= '9')) && strpbrk(buf, "xXpP") == NULL &&
+            v == v && v - v == 0) {
             fprintf(f, "%.10g", v);
             return;
         }
@@ -414,8 +416,9 @@ static void html_wrote(const html_ctx *c, const char *path)
         c->o->wrote(c->o->ud, path, stat(path, &st) == 0 ? (size_t)st.st_size : 0);
 }
 
-/* The game pages of a run (not embedded): each played and written atomically. */
-static int html_game_pages(html_ctx *c, const html_run *r)
+/* The game pages of a run (not embedded), each checked (write 0: before anything is written, an existing file
+ * that is not one of these pages is refused) or played and written atomically (write 1). */
+static int html_game_pages(html_ctx *c, const html_run *r, int write)
 {
     uint32_t i;
     int g;
@@ -430,6 +433,12 @@ static int html_game_pages(html_ctx *c, const html_run *r)
                 continue;
             html_game_href(rel, sizeof rel, r, i, g);
             snprintf(path, sizeof path, "%s/%s", c->out, rel);
+            if (!write) {
+                if (access(path, F_OK) == 0 && duel_out_own_allowed_msg("report", "--html", path, &html_kind,
+                                                                        c->o->force, NULL, 0, c->msg, c->cap) != 0)
+                    return 2;
+                continue;
+            }
             duel_replay_init(&rep);
             if (html_play(&rep, r, i, g) != 0) {
                 duel_replay_free(&rep);
@@ -442,28 +451,6 @@ static int html_game_pages(html_ctx *c, const html_run *r)
             if (st != 0)
                 return st;
             html_wrote(c, path);
-        }
-    }
-    return 0;
-}
-
-/* Every page a run's games will be written to, checked before anything is written. */
-static int html_check_game_pages(html_ctx *c, const html_run *r)
-{
-    uint32_t i;
-    int g;
-    for (i = 0; i < r->n_levels; i++) {
-        if (!html_has_games(c, r, i))
-            continue;
-        for (g = 0; g <= DUEL_N_BUILTINS; g++) {
-            char rel[600], path[HTML_PATH + 600];
-            if (!html_game_exists(i, g))
-                continue;
-            html_game_href(rel, sizeof rel, r, i, g);
-            snprintf(path, sizeof path, "%s/%s", c->out, rel);
-            if (access(path, F_OK) == 0 &&
-                duel_out_own_allowed_msg("report", "--html", path, &html_kind, c->o->force, NULL, 0, c->msg, c->cap) != 0)
-                return 2;
         }
     }
     return 0;
@@ -709,9 +696,9 @@ int duel_html_run_report(const char *run, const char *out, const duel_html_repor
     if (st == 0 && access(index, F_OK) == 0)
         st = duel_out_allowed_msg("report", "--html", index, &html_kind, o->force, inputs, 1, msg, cap);
     if (st == 0 && !o->embed)
-        st = html_check_game_pages(&c, &r);
+        st = html_game_pages(&c, &r, 0);
     if (st == 0 && !o->embed)
-        st = html_game_pages(&c, &r);
+        st = html_game_pages(&c, &r, 1);
     if (st == 0) {
         p.c = &c;
         p.r = &r;
@@ -963,9 +950,9 @@ int duel_html_experiment_report(const char *dir, const char *out, const duel_htm
                 n++;
         }
         for (i = 0; st == 0 && !o->embed && i < n; i++)
-            st = html_check_game_pages(&c, &runs[i]);
+            st = html_game_pages(&c, &runs[i], 0);
         for (i = 0; st == 0 && !o->embed && i < n; i++)
-            st = html_game_pages(&c, &runs[i]);
+            st = html_game_pages(&c, &runs[i], 1);
         if (st == 0) {
             html_safe_name(name, sizeof name - 8, e.methods[m]);
             snprintf(path, sizeof path, "%s/%s.html", out, name);
