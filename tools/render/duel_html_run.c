@@ -97,6 +97,15 @@ static int html_read(const char *path, char **text, size_t *len, char *msg, size
     return 0;
 }
 
+/* html_read for a file a page shows when it is there: NULL when missing or unreadable (no message). */
+static char *html_read_quiet(const char *path, size_t *len)
+{
+    char *text = NULL, msg[1400];
+    if (html_read(path, &text, len, msg, sizeof msg) != 0)
+        return NULL;
+    return text;
+}
+
 /* One CSV field as JSON: a number when the whole field is one, else a string. */
 static void html_field(FILE *f, const char *s, size_t n)
 {
@@ -188,9 +197,9 @@ static void html_csv_table(FILE *f, const char *text, size_t len, const char *on
 /* A file's CSV table, or null when the file does not exist or cannot be read. */
 static void html_csv_file(FILE *f, const char *path, const char *only)
 {
-    char *text = NULL, msg[16];
+    char *text = NULL;
     size_t len = 0;
-    if (html_read(path, &text, &len, msg, sizeof msg) != 0 || text == NULL) {
+    if ((text = html_read_quiet(path, &len)) == NULL) {
         fputs("null", f);
         return;
     }
@@ -201,12 +210,12 @@ static void html_csv_file(FILE *f, const char *path, const char *only)
 /* config.ini's entries as [[section, key, value], ...] (comments and blank lines left out). */
 static void html_config(FILE *f, const char *run)
 {
-    char path[HTML_PATH], *text = NULL, msg[16], section[128] = "", *line, *save = NULL;
+    char path[HTML_PATH], *text = NULL, section[128] = "", *line, *save = NULL;
     size_t len = 0;
     int first = 1;
     snprintf(path, sizeof path, "%s/config.ini", run);
     fputc('[', f);
-    if (html_read(path, &text, &len, msg, sizeof msg) == 0 && text != NULL) {
+    if ((text = html_read_quiet(path, &len)) != NULL) {
         for (line = strtok_r(text, "\n", &save); line != NULL; line = strtok_r(NULL, "\n", &save)) {
             char *eq, *k, *v, *e;
             while (*line == ' ' || *line == '\t')
@@ -266,12 +275,12 @@ static void html_ladder_free(html_ladder *l)
 /* RUN/ladder.csv read loosely (a page shows what is there): columns NAME_wins and NAME_losses per builtin. */
 static void html_ladder_read(html_ladder *l, const char *run)
 {
-    char path[HTML_PATH], *text = NULL, msg[16], *line, *save = NULL;
+    char path[HTML_PATH], *text = NULL, *line, *save = NULL;
     int col_w[DUEL_N_BUILTINS], col_l[DUEL_N_BUILTINS], b, hdr = 1;
     size_t len = 0, rows = 0;
     memset(l, 0, sizeof *l);
     snprintf(path, sizeof path, "%s/ladder.csv", run);
-    if (html_read(path, &text, &len, msg, sizeof msg) != 0 || text == NULL)
+    if ((text = html_read_quiet(path, &len)) == NULL)
         return;
     for (b = 0; b < DUEL_N_BUILTINS; b++)
         col_w[b] = col_l[b] = -1;
@@ -823,10 +832,10 @@ static int html_open_exp(html_exp *e, const char *dir, char *msg, size_t cap)
 /* A figure of the report: an SVG file as an image, when it exists. */
 static void html_figure(FILE *f, const char *report, const char *name, const char *caption, int *first)
 {
-    char path[HTML_PATH + 300], *text = NULL, msg[16];
+    char path[HTML_PATH + 300], *text = NULL;
     size_t len = 0;
     snprintf(path, sizeof path, "%s/%s", report, name);
-    if (html_read(path, &text, &len, msg, sizeof msg) != 0 || text == NULL)
+    if ((text = html_read_quiet(path, &len)) == NULL)
         return;
     fputs(*first ? "{\"caption\":" : ",{\"caption\":", f);
     *first = 0;
