@@ -5,6 +5,8 @@
 #include <new>
 
 #include <nanobind/stl/string.h>
+#include <nanobind/stl/tuple.h>
+#include <nanobind/stl/vector.h>
 
 #include "duel.h"
 #include "nd.h"
@@ -195,6 +197,48 @@ void nd_bind_genome(nb::module_ &m)
                 return s.gen().has_fitness ? nb::cast(s.gen().fitness) : nb::none();
             }, nb::sig("def fitness(self) -> float | None"), "Its fitness, None before it was given one.")
         .def_prop_ro("species", [](const nd_genome &s) { return s.gen().species; }, "The id of its species.")
+        .def_static("from_genes", [](uint32_t n_inputs, uint32_t n_outputs, uint32_t n_hidden,
+                                     const std::vector<std::tuple<uint32_t, uint32_t, double>> &conns,
+                                     const std::string &step) {
+                // node ids as libneat numbers them: 0 the bias, 1..n_inputs the inputs, then the outputs, then hidden
+                if (n_inputs == 0 || n_outputs == 0 || (uint64_t)n_inputs + n_outputs + n_hidden + 1 > NRT_MAX_NODES)
+                    throw nd_error(NEAT_E_ARG, "from_genes: 1.. inputs and outputs, and at most " +
+                                                   std::to_string(NRT_MAX_NODES) + " nodes with the bias");
+                if (step != "sync" && step != "propagate")
+                    throw nd_error(NEAT_E_ARG, "from_genes: step is 'sync' or 'propagate', not '" + step + "'");
+                const uint32_t n_nodes = 1 + n_inputs + n_outputs + n_hidden;
+                nd_genome r;
+                r.n_inputs = n_inputs;
+                r.n_outputs = n_outputs;
+                r.net_step = step == "propagate" ? NEAT_STEP_PROPAGATE : NEAT_STEP_SYNC;
+                int err = 0;
+                for (uint32_t id = 0; id < n_nodes && !err; id++) {
+                    int type = id == 0 ? NEAT_NODE_BIAS : id <= n_inputs ? NEAT_NODE_INPUT
+                             : id <= n_inputs + n_outputs ? NEAT_NODE_OUTPUT : NEAT_NODE_HIDDEN;
+                    err = neat_genome_add_node(&r.g, id, type, nullptr);
+                }
+                uint32_t innov = 0;
+                for (const auto &c : conns) {
+                    uint32_t in = std::get<0>(c), out = std::get<1>(c);
+                    if (in >= n_nodes || out >= n_nodes || (out >= 1 && out <= n_inputs) || out == 0)
+                        throw nd_error(NEAT_E_ARG, "from_genes: connection " + std::to_string(innov) + " (" +
+                                                       std::to_string(in) + " -> " + std::to_string(out) +
+                                                       ") leaves the nodes or ends at the bias or an input");
+                    if (!err)
+                        err = neat_genome_add_conn(&r.g, in, out, std::get<2>(c), innov, 1, nullptr);
+                    innov++;
+                }
+                if (err)
+                    nd_fail(err, "building a genome");
+                return r;
+            }, nb::arg("n_inputs"), nb::arg("n_outputs"), nb::arg("n_hidden"), nb::arg("conns"),
+            nb::arg("step") = "sync",
+            "A genome from its genes (another learner's network in this format: a policy trained by\n"
+            "gradient descent, say): node 0 the bias, 1..n_inputs the inputs, then the outputs, then\n"
+            "n_hidden hidden nodes; conns (in, out, weight) every one enabled, innovation numbers in\n"
+            "order; step 'sync' or 'propagate' (a feed-forward net in one step). Every node computes\n"
+            "the runtime's sigmoid 1/(1+exp(-4.9 x)) of its weighted sum; weights are stored in Q3.12\n"
+            "(|w| < 8) in its network.")
         .def("network", &nd_network_of, nb::sig("def network(self) -> Network"),
              "Its network in the runtime, encoded exactly as evolution evaluates it (and as a\n"
              "microcontroller runs it): step, settle, reset.")

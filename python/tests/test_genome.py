@@ -106,3 +106,32 @@ def test_blobs(tmp_path: pathlib.Path) -> None:
         nd.Network.from_blob(bytes(bad))
     with pytest.raises(nd.FormatError):
         nd.Network.from_blob(b"")
+
+
+def test_from_genes_is_a_layered_network(tmp_path: pathlib.Path) -> None:
+    """A two-layer perceptron written as genes computes sigmoid(4.9 x) layer by layer, in one propagate step."""
+    rng = np.random.default_rng(5)
+    ni, no, h = 12, 3, 6
+    w1, b1, w2, b2 = rng.normal(0, 1, (h, ni)), rng.normal(0, 1, h), rng.normal(0, 1, (no, h)), rng.normal(0, 1, no)
+    conns = [(0, 1 + ni + no + k, b1[k]) for k in range(h)]
+    conns += [(1 + i, 1 + ni + no + k, w1[k, i]) for k in range(h) for i in range(ni)]
+    conns += [(0, 1 + ni + o, b2[o]) for o in range(no)]
+    conns += [(1 + ni + no + k, 1 + ni + o, w2[o, k]) for o in range(no) for k in range(h)]
+    g = nd.Genome.from_genes(ni, no, h, conns, step="propagate")
+    assert (g.n_inputs, g.n_outputs, g.n_hidden, g.n_enabled, g.step) == (ni, no, h, len(conns), "propagate")
+    net = g.network()
+
+    def sig(x: np.ndarray) -> np.ndarray:
+        return 1 / (1 + np.exp(-4.9 * x))
+
+    for _ in range(20):
+        x = rng.uniform(-1, 1, ni)
+        want = sig(w2 @ sig(w1 @ x + b1) + b2)
+        net.reset()
+        assert np.allclose(net.step(list(x)), want, atol=2e-3)  # Q15 activations, Q3.12 weights
+    g.save(str(tmp_path / "mlp.genome"))
+    assert nd.Genome.load(str(tmp_path / "mlp.genome")).n_enabled == len(conns)
+    with pytest.raises(nd.ArgumentError, match="ends at the bias or an input"):
+        nd.Genome.from_genes(2, 1, 0, [(0, 1, 1.0)])
+    with pytest.raises(nd.ArgumentError, match="'sync' or 'propagate'"):
+        nd.Genome.from_genes(2, 1, 0, [(0, 3, 1.0)], step="fast")
