@@ -1,0 +1,203 @@
+"""ppo_selfplay.py - deep-RL self-play on the robot duel: PPO (Stable-Baselines3, CPU) against a pool of its past selves.
+
+The deep-RL counterpart of a coevolution with a Hall of Fame (docs/envs.md, "A deep-RL baseline"): one PPO learner
+plays the duel (neat_duel.envs.DuelVsEnv, the C world) against opponents drawn per game from a pool of its own past
+policies, a snapshot added every --snapshot-games games; the budget is counted in games, as a coevolution's is.
+
+Its policy is a network the project's runtime runs exactly as trained: 12 sensor inputs and the bias, one hidden
+layer, 3 outputs, every unit the runtime's sigmoid 1/(1+exp(-4.9 x)) (the actor's hidden layer uses it, and the
+action the environment receives is that sigmoid of the actor's mean), weights kept inside the runtime's Q3.12 range
+(|w| < 8). So each snapshot is written as a genome file (neat_duel.Genome.from_genes, step "propagate": the two
+layers within one step) that `duel_evolve play`, `ladder`-style comparisons and a firmware run, and the pool's
+opponents are those very networks. At the end the final policy is placed on the built-in ladder (288-game
+comparisons against each built-in strategy) and, with --against RUN, against each of a run's dominance levels.
+
+    pip install -r examples/rl/requirements.txt      # in a virtual environment, beside the neat_duel package
+    python examples/rl/ppo_selfplay.py --out runs/ppo --games 20000 --against runs/quick
+
+It continues where it stopped (the same command): the model, the pool and the counters are saved every
+--snapshot-games games in OUT. Results: OUT/result.json and the lines printed at the end.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import time
+from typing import Any, Callable
+
+import numpy as np
+import torch
+from stable_baselines3 import PPO
+from stable_baselines3.common.callbacks import BaseCallback
+from stable_baselines3.common.vec_env import DummyVecEnv, VecMonitor
+
+import neat_duel as nd
+from neat_duel import envs
+
+SLOPE = 4.9  # the runtime's sigmoid: 1 / (1 + exp(-4.9 x)) (runtime/src/nrt_sigmoid.c)
+W_MAX = 7.99  # the runtime's weights are Q3.12: |w| < 8
+QUICK_GAMES = 614_400  # configs/quick.ini: 200 generations of 6,144 games (its generations.csv's games column)
+
+
+class NeatSigmoid(torch.nn.Module):
+    """The runtime's node function, as a torch activation."""
+
+    def forward(self, x: torch.Tensor) -> torch.Tensor:
+        return torch.sigmoid(SLOPE * x)
+
+
+class SigmoidActions(envs.DuelVsEnv):
+    """DuelVsEnv whose action is the actor's pre-activation: the robot's motor outputs are its runtime sigmoid (what
+    the exported network's output nodes compute), so a policy's mean action is exactly the network's output."""
+
+    def __init__(self, **kw: Any) -> None:
+        super().__init__(**kw)
+        import gymnasium
+
+        self.action_space = gymnasium.spaces.Box(-4.0, 4.0, shape=(envs.N_ACTIONS,), dtype=np.float32)
+
+    def step(self, action: Any) -> Any:
+        z = np.clip(np.asarray(action, dtype=np.float64), -4.0, 4.0)
+        return super().step((1.0 / (1.0 + np.exp(-SLOPE * z))).astype(np.float32))
+
+
+def policy_genome(model: PPO) -> nd.Genome:
+    """The actor as genes: inputs 1..12 and the bias (node 0) -> H hidden -> 3 outputs, step "propagate"."""
+    pol = model.policy
+    hidden = pol.mlp_extractor.policy_net[0]  # Linear(12, H), then NeatSigmoid
+    out = pol.action_net  # Linear(H, 3)
+    w1, b1 = hidden.weight.detach().cpu().numpy(), hidden.bias.detach().cpu().numpy()
+    w2, b2 = out.weight.detach().cpu().numpy(), out.bias.detach().cpu().numpy()
+    n_in, n_out, n_h = envs.N_OBSERVATIONS, envs.N_ACTIONS, w1.shape[0]
+    conns: list[tuple[int, int, float]] = []
+    for k in range(n_h):
+        node = 1 + n_in + n_out + k
+        conns.append((0, node, float(b1[k])))
+        conns += [(1 + i, node, float(w1[k, i])) for i in range(n_in)]
+    for o in range(n_out):
+        conns.append((0, 1 + n_in + o, float(b2[o])))
+        conns += [(1 + n_in + n_out + k, 1 + n_in + o, float(w2[o, k])) for k in range(n_h)]
+    return nd.Genome.from_genes(n_in, n_out, n_h, conns, step="propagate")
+
+
+def clamp_actor(model: PPO) -> None:
+    """Keeps the actor's weights in the runtime's range (they rarely leave it; when they do, the network would not
+    be the policy)."""
+    with torch.no_grad():
+        for layer in (model.policy.mlp_extractor.policy_net[0], model.policy.action_net):
+            layer.weight.clamp_(-W_MAX, W_MAX)
+            layer.bias.clamp_(-W_MAX, W_MAX)
+
+
+class SelfPlay(BaseCallback):
+    """Counts games; every `every` games adds the current policy to the pool (a genome file), hands the pool to
+    every environment, and saves the model, so that the run continues after a stop."""
+
+    def __init__(self, out: str, every: int, budget: int, state: dict[str, Any]) -> None:
+        super().__init__()
+        self.out, self.every, self.budget, self.state = out, every, budget, state
+        self.t0 = time.time()
+
+    def _on_step(self) -> bool:
+        dones = self.locals["dones"]
+        self.state["games"] += int(np.sum(dones))
+        if self.state["games"] >= self.state["next_snapshot"]:
+            snapshot(self.model, self.out, self.state)
+            self.training_env.env_method("set_opponents", pool_networks(self.out, self.state))
+            cpu = time.process_time()
+            print(f"games {self.state['games']:,} of {self.budget:,}: pool {len(self.state['pool'])}, "
+                  f"{self.num_timesteps:,} learner steps, {time.time() - self.t0:.0f} s, CPU {cpu:.0f} s", flush=True)
+        return self.state["games"] < self.budget
+
+
+def snapshot(model: PPO, out: str, state: dict[str, Any]) -> None:
+    clamp_actor(model)
+    name = f"snap-{state['games']:09d}.genome"
+    policy_genome(model).save(os.path.join(out, "pool", name))
+    state["pool"].append(name)
+    state["next_snapshot"] = state["games"] + state["every"]
+    model.save(os.path.join(out, "model.zip"))
+    tmp = os.path.join(out, "state.json.tmp")
+    with open(tmp, "w") as f:
+        json.dump(state, f)
+    os.replace(tmp, os.path.join(out, "state.json"))
+
+
+def pool_networks(out: str, state: dict[str, Any]) -> list[nd.Network]:
+    return [nd.Genome.load(os.path.join(out, "pool", n)).network() for n in state["pool"]]
+
+
+def place(genome_file: str, against: str | None) -> dict[str, Any]:
+    """The final policy on the built-in ladder and against a run's dominants: 288-game comparisons (wins, losses)."""
+    net = nd.Genome.load(genome_file).network()
+    result: dict[str, Any] = {"builtins": {}, "dominants": []}
+    for b in nd.duel_builtins():
+        c = nd.duel_compare(net, b)
+        result["builtins"][b] = c
+    if against:
+        rd = nd.runs.RunDir(against)
+        for d in rd.dominants():
+            c = nd.duel_compare(net, rd.champion_network(d["generation"]))
+            result["dominants"].append({"level": d["level"], "generation": d["generation"], **c})
+    return result
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--out", required=True, help="the run's directory (continued when it holds a run)")
+    ap.add_argument("--games", type=int, default=QUICK_GAMES, help="the budget in games (default: a quick coevolution's)")
+    ap.add_argument("--snapshot-games", type=int, default=None, help="games between snapshots (default: budget / 50)")
+    ap.add_argument("--envs", type=int, default=8, help="games played side by side")
+    ap.add_argument("--hidden", type=int, default=16, help="the policy's hidden units")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--layouts", default="comparison", help="training or comparison food layouts")
+    ap.add_argument("--against", default=None, help="a run directory whose dominants the final policy meets")
+    a = ap.parse_args(argv)
+    torch.set_num_threads(1)  # small networks: threads cost more than they give; the envs run side by side
+    os.makedirs(os.path.join(a.out, "pool"), exist_ok=True)
+    state_path = os.path.join(a.out, "state.json")
+    resumed = os.path.exists(state_path)
+    if resumed:
+        with open(state_path) as f:
+            state = json.load(f)
+        if state["budget"] != a.games or state["seed"] != a.seed:
+            raise SystemExit(f"{a.out} holds a run of {state['budget']} games, seed {state['seed']}: not this one")
+    else:
+        every = a.snapshot_games or max(1, a.games // 50)
+        state = {"games": 0, "budget": a.games, "seed": a.seed, "every": every, "next_snapshot": 0, "pool": []}
+
+    def make(i: int) -> Callable[[], SigmoidActions]:
+        return lambda: SigmoidActions(opponent="idle", side="random", layouts=a.layouts)
+
+    venv = VecMonitor(DummyVecEnv([make(i) for i in range(a.envs)]))
+    venv.seed(a.seed)
+    if resumed:
+        model = PPO.load(os.path.join(a.out, "model.zip"), env=venv, device="cpu")
+    else:
+        kw = dict(net_arch=dict(pi=[a.hidden], vf=[64, 64]), activation_fn=NeatSigmoid)
+        model = PPO("MlpPolicy", venv, policy_kwargs=kw, n_steps=1024, batch_size=256, seed=a.seed, device="cpu",
+                    verbose=0)
+        snapshot(model, a.out, state)  # the pool starts with the untrained policy, as a coevolution's first hosts
+    venv.env_method("set_opponents", pool_networks(a.out, state))
+    t0, c0 = time.time(), time.process_time()
+    if state["games"] < state["budget"]:
+        model.learn(total_timesteps=10**12, callback=SelfPlay(a.out, state["every"], a.games, state),
+                    reset_num_timesteps=not resumed)
+        snapshot(model, a.out, state)
+    final = os.path.join(a.out, "ppo-final.genome")
+    policy_genome(model).save(final)
+    res = {"games": state["games"], "learner_steps": int(model.num_timesteps), "pool": len(state["pool"]),
+           "seconds": time.time() - t0, "cpu_seconds": time.process_time() - c0, **place(final, a.against)}
+    with open(os.path.join(a.out, "result.json"), "w") as f:
+        json.dump(res, f, indent=1)
+    print(f"{res['games']:,} games, {res['learner_steps']:,} learner steps; the final policy: {final}")
+    for b, c in res["builtins"].items():
+        print(f"  vs {b:15s} {c['wins']:3d} wins {c['losses']:3d} losses of 288")
+    for d in res["dominants"]:
+        print(f"  vs level {d['level']:2d} (generation {d['generation']}) {d['wins']:3d} wins {d['losses']:3d} losses")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
