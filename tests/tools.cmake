@@ -218,6 +218,7 @@ set_tests_properties(render/html_firefox PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 
 add_test(NAME render/html_cli
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render/html_cli.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:duel_bench>
                  ${CMAKE_CURRENT_SOURCE_DIR}/tools/fixtures/experiment-tiny)
+set_tests_properties(render/html_cli PROPERTIES ENVIRONMENT "${NEAT_RENDER_ENV}") # it draws frames too (OSMesa)
 foreach(check frames deterministic lcm video video-kill render-net bad-input)
   add_test(NAME render/duel_render_${check}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render/render_cli.sh $<TARGET_FILE:duel_evolve> $<TARGET_FILE:duel_bench>
