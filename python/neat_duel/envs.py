@@ -294,7 +294,7 @@ class DuelEnv(ParallelEnv):  # type: ignore[misc]  # pettingzoo has no type info
         """Nothing to release (the game lives in the DuelBatch)."""
 
     def state(self) -> npt.NDArray[np.float32]:
-        """Both robots' observations, (2, 12): the game's whole state as the agents see it."""
+        """Both robots' observations, (2, 12), west then east: a global view (for a centralised critic)."""
         obs: Observation = self.batch.observe()[0]
         return obs
 
@@ -310,7 +310,8 @@ class DuelVecEnv:
     layouts are drawn from the generator ``reset`` seeded (``rng = numpy.random.default_rng(seed)``: reset draws
     ``layouts[rng.integers(len(layouts), size=K)]``, a step in which n games ended
     ``layouts[rng.integers(len(layouts), size=n)]`` for them in the order of the games). ``threads`` steps the games
-    on that many threads (each game alone: the same results).
+    on that many threads (each game alone: the same results). Without autoreset an ended game stays as it ended
+    (reward 0, its flags repeated) until ``reset`` or ``batch.reset(indices, layouts)`` starts it again.
     """
 
     def __init__(
@@ -386,7 +387,8 @@ class _Opponent:
             self.net = Network.load(who)
             self.name = os.fspath(who)
         else:
-            raise TypeError(f"opponent: a built-in strategy's name, a Network or a blob's path, not {type(who).__name__}")
+            raise TypeError(f"opponent: a built-in strategy's name, a Network or a blob's path, not "
+                            f"{type(who).__name__}")
         if self.net is not None and (self.net.n_inputs != N_OBSERVATIONS or self.net.n_outputs != N_ACTIONS):
             raise ValueError(f"opponent {self.name}: a network of {self.net.n_inputs} inputs and "
                              f"{self.net.n_outputs} outputs; the duel's have {N_OBSERVATIONS} and {N_ACTIONS}")

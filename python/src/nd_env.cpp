@@ -212,7 +212,11 @@ void nd_bind_env(nb::module_ &m)
                 uint32_t t = nd_u32(threads, "threads", 1);
                 if (!std::isfinite(shaping))
                     throw nd_error(NEAT_E_ARG, "shaping: a finite number");
-                const duel_rules *r = config.is_none() ? duel_rules_v1() : &nb::cast<nd_duel_config &>(config).cfg.world;
+                nd_duel_config *cfg = nullptr;
+                if (!config.is_none() && (!nb::try_cast<nd_duel_config *>(config, cfg) || cfg == nullptr))
+                    throw nb::type_error(("config: a DuelConfig or None, not " +
+                                          std::string(Py_TYPE(config.ptr())->tp_name)).c_str());
+                const duel_rules *r = cfg == nullptr ? duel_rules_v1() : &cfg->cfg.world;
                 const char *field = nullptr, *why = nullptr;
                 if (duel_rules_check(r, &field, &why) != DUEL_OK)
                     throw nd_error(NEAT_E_PARAM, std::string("the configuration's [world] rules cannot make a game: ") +

@@ -479,6 +479,8 @@ def test_batch_misuse() -> None:
         b.state(3)
     with pytest.raises(ValueError):
         DuelBatch(0)
+    with pytest.raises(TypeError):
+        DuelBatch(1, config="configs/quick.ini")  # type: ignore[arg-type]
     # a game over is not stepped again until reset
     b.reset(np.array([0]), np.array([-1]))
     go = np.ones((3, 2, 3), dtype=np.float32)
