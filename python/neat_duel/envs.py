@@ -404,6 +404,18 @@ class _Opponent:
         return builtin_action(self.builtin, obs)
 
 
+def _opponents(opponent: Union[Opponent, Sequence[Opponent]]) -> list[_Opponent]:
+    """One opponent or a list of them, checked."""
+    whos: list[Opponent]
+    if isinstance(opponent, (str, Network, os.PathLike)):
+        whos = [opponent]
+    else:
+        whos = list(opponent)
+    if not whos:
+        raise ValueError("opponent: an empty list")
+    return [_Opponent(w) for w in whos]
+
+
 class DuelVsEnv(gymnasium.Env[Observation, Action]):
     """The robot duel for one learning agent (a Gymnasium ``Env``): the other robot is a built-in strategy, a
     champion network, or one of a list drawn per episode.
@@ -434,14 +446,7 @@ class DuelVsEnv(gymnasium.Env[Observation, Action]):
             raise ValueError(f"side: 'west', 'east' or 'random', not {side!r}")
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ValueError(f"render_mode: None or 'ansi', not {render_mode!r}")
-        whos: list[Opponent]
-        if isinstance(opponent, (str, Network, os.PathLike)):
-            whos = [opponent]
-        else:
-            whos = list(opponent)
-        if not whos:
-            raise ValueError("opponent: an empty list")
-        self.opponents = [_Opponent(w) for w in whos]
+        self.opponents = _opponents(opponent)
         self.side_rule = side
         self.render_mode = render_mode
         self.layouts = resolve_layouts(layouts)
@@ -455,6 +460,11 @@ class DuelVsEnv(gymnasium.Env[Observation, Action]):
         self._actions = np.zeros((1, 2, N_ACTIONS), dtype=np.float32)
         self._over = True
         self._index = np.zeros(1, dtype=np.int64)
+
+    def set_opponents(self, opponent: Union[Opponent, Sequence[Opponent]]) -> None:
+        """Replaces the opponents (one or a list, as the constructor takes them) from the next reset on: a
+        self-play pool that grows. The episode in play keeps its opponent."""
+        self.opponents = _opponents(opponent)
 
     def _info(self) -> dict[str, Any]:
         info = _agent_info(self.batch.state(0), AGENTS[self.side])

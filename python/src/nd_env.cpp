@@ -116,7 +116,7 @@ void nd_envs::step_range(size_t lo, size_t hi)
                 rw += shaping * ((double)after - (double)before) / 65536.0 * scale;
             }
             r[0] = (float)rw;
-            r[1] = (float)-rw;
+            r[1] = (float)(0.0 - rw); // +0.0, not -0.0, when rw is 0
         } else {
             std::memset(&ev[k], 0, sizeof ev[k]);
             ev[k].outcome = g->outcome;

@@ -177,13 +177,15 @@ def test_rewards_and_shaping() -> None:
             assert any(r > 0 for r in rewards[:-1]) and any(r < 0 for r in rewards[:-1])
 
 
-def test_zero_sum_rewards_and_end() -> None:
-    env = DuelEnv(shaping=1.0)
+@pytest.mark.parametrize("shaping", [0.0, 1.0])
+def test_zero_sum_rewards_and_end(shaping: float) -> None:
+    env = DuelEnv(shaping=shaping)
     env.reset(seed=1)
     rng = np.random.default_rng(5)
     while env.agents:
         _, rew, term, trunc, infos = env.step({a: rng.random(3, dtype=np.float32) for a in env.agents})
         assert rew["west"] == -rew["east"]
+        assert not any(math.copysign(1.0, r) < 0 for r in rew.values() if r == 0)  # 0.0, never -0.0
         assert term["west"] == term["east"] and trunc["west"] == trunc["east"]
     assert trunc["west"] and infos["west"]["t"] == envs.MAX_STEPS and infos["west"]["outcome"] == "timeout"
     with pytest.raises(RuntimeError):
@@ -229,6 +231,13 @@ def test_vs_env_draws_layout_side_opponent() -> None:
         seen.add((info["side"], who))
     assert len(seen) == 8
     assert DuelVsEnv(side="east").reset(seed=0)[1]["side"] == "east"
+    # a pool that changes: the next reset draws from the new one
+    env.set_opponents(["spinner"])
+    assert env.reset(seed=0)[1]["opponent"] == "builtin:spinner"
+    env.set_opponents([nd.Network.load(CHAMPION)] * 2 + ["idle"])
+    rng = np.random.default_rng(5)
+    rng.integers(144), rng.integers(2)
+    assert env.reset(seed=5)[1]["opponent"] == env.opponents[rng.integers(3)].name
     with pytest.raises(ValueError):
         DuelVsEnv("forrager")
     with pytest.raises(ValueError):
