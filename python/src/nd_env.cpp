@@ -59,12 +59,14 @@ struct nd_envs {
     double shaping = 0.0;              // the shaped reward's weight (0: off)
     uint32_t threads = 1;
     std::mutex mu;                     // one call at a time (the interpreter lock is released while stepping)
-    // the helper threads: worker i steps the i-th share of the games in every step while the caller steps share 0
+    // the helper threads: in every step each thread, the caller's too, claims chunks of games until none is left
+    // (a helper the system has not run yet finds none, and the caller never waits for it)
     std::vector<std::thread> workers;
     std::mutex pool_mu;
     std::condition_variable go, done;
-    uint64_t job = 0;                  // step number: a worker runs when it grows
-    uint32_t pending = 0;              // workers still stepping the current job
+    uint64_t job = 0;                  // step number: the helpers wake when it grows
+    size_t chunk = 0, n_chunks = 0;    // games a chunk, chunks of the step
+    size_t next = 0, finished = 0;     // the next chunk to claim, the chunks stepped
     bool quit = false;
     const float *job_act = nullptr;
     float *job_obs = nullptr, *job_rew = nullptr;
@@ -84,14 +86,10 @@ struct nd_envs {
             t.join();
     }
     size_t size() const { return w.size(); }
-    // games [lo, hi) of share i of the threads' shares: contiguous, sizes differing by at most 1
-    void share(uint32_t i, size_t *lo, size_t *hi) const
-    {
-        *lo = size() * i / threads;
-        *hi = size() * (i + 1) / threads;
-    }
     void step_range(size_t lo, size_t hi);
-    void worker(uint32_t i);
+    void step_all();
+    void claim_and_step(uint64_t id);
+    void worker();
 };
 
 // Steps games [lo, hi): the job's actions in, its observations, rewards and flags out. A game already over is not
@@ -129,7 +127,30 @@ void nd_envs::step_range(size_t lo, size_t hi)
     }
 }
 
-void nd_envs::worker(uint32_t i)
+// Claims and steps chunks of step id until none is left (or the step is another's).
+void nd_envs::claim_and_step(uint64_t id)
+{
+    for (;;) {
+        size_t c;
+        {
+            std::lock_guard<std::mutex> lk(pool_mu);
+            if (job != id || next >= n_chunks)
+                return;
+            c = next++;
+        }
+        size_t lo = c * chunk, hi = lo + chunk < size() ? lo + chunk : size();
+        step_range(lo, hi);
+        bool last;
+        {
+            std::lock_guard<std::mutex> lk(pool_mu);
+            last = ++finished == n_chunks;
+        }
+        if (last)
+            done.notify_all();
+    }
+}
+
+void nd_envs::worker()
 {
     uint64_t seen = 0;
     for (;;) {
@@ -140,15 +161,30 @@ void nd_envs::worker(uint32_t i)
                 return;
             seen = job;
         }
-        size_t lo, hi;
-        share(i, &lo, &hi);
-        step_range(lo, hi);
-        {
-            std::lock_guard<std::mutex> lk(pool_mu);
-            pending--;
-        }
-        done.notify_one();
+        claim_and_step(seen);
     }
+}
+
+// Every game of the job on the batch's threads (the job's arrays set). Each game is stepped alone, whichever thread
+// steps it: the results do not depend on the threads.
+void nd_envs::step_all()
+{
+    if (threads <= 1) {
+        step_range(0, size());
+        return;
+    }
+    uint64_t id;
+    {
+        std::lock_guard<std::mutex> lk(pool_mu);
+        chunk = (size() + 4 * threads - 1) / (4 * threads); // four chunks a thread: an uneven start evens out
+        n_chunks = (size() + chunk - 1) / chunk;
+        next = finished = 0;
+        id = ++job;
+    }
+    go.notify_all();
+    claim_and_step(id);
+    std::unique_lock<std::mutex> lk(pool_mu);
+    done.wait(lk, [&] { return finished == n_chunks; });
 }
 
 // The batch's lock, waited for with the interpreter lock released (its holder needs that lock to finish).
@@ -232,7 +268,7 @@ void nd_bind_env(nb::module_ &m)
                 for (uint32_t i = 0; i < k; i++)
                     duel_world_init_rules(&self->w[i], &self->rules, DUEL_TRAINING);
                 for (uint32_t i = 1; i < self->threads; i++)
-                    self->workers.emplace_back([self, i] { self->worker(i); });
+                    self->workers.emplace_back([self] { self->worker(); });
             }, nb::arg("num_games"), nb::arg("config") = nb::none(), nb::arg("shaping") = 0.0,
             nb::arg("threads") = 1,
             nb::sig("def __init__(self, num_games: int, config: DuelConfig | None = None, shaping: float = 0.0, "
@@ -292,21 +328,7 @@ void nd_bind_env(nb::module_ &m)
                     e.job_rew = rew.get();
                     e.job_term = term.get();
                     e.job_trunc = trunc.get();
-                    if (e.threads > 1) {
-                        {
-                            std::lock_guard<std::mutex> plk(e.pool_mu);
-                            e.pending = e.threads - 1;
-                            e.job++;
-                        }
-                        e.go.notify_all();
-                    }
-                    size_t lo, hi;
-                    e.share(0, &lo, &hi);
-                    e.step_range(lo, hi);
-                    if (e.threads > 1) {
-                        std::unique_lock<std::mutex> plk(e.pool_mu);
-                        e.done.wait(plk, [&] { return e.pending == 0; });
-                    }
+                    e.step_all();
                 }
                 size_t s3[3] = {k, 2, ND_OBS}, s2[2] = {k, 2}, s1[1] = {k};
                 return std::make_tuple(nd_owned(std::move(obs), s3), nd_owned(std::move(rew), s2),
