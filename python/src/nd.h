@@ -209,3 +209,4 @@ void nd_bind_coev(nb::module_ &m);
 void nd_bind_duel(nb::module_ &m);
 void nd_bind_run(nb::module_ &m);
 void nd_bind_engine(nb::module_ &m);
+void nd_bind_env(nb::module_ &m);

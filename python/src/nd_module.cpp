@@ -17,6 +17,7 @@ NB_MODULE(_core, m)
     nd_bind_duel(m);
     nd_bind_run(m);
     nd_bind_engine(m);
+    nd_bind_env(m);
     m.def("seed_derive", [](uint64_t base, const std::vector<uint64_t> &keys) {
             return neat_seed_derive(base, keys.data(), keys.size());
         }, nb::arg("base"), nb::arg("keys"),

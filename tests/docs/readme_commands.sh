@@ -108,6 +108,7 @@ reduce() { # reduce COMMAND: prints the command to run
   "bench/generation_cost.sh "*) c=${c#bench/generation_cost.sh }; c="bench/generation_cost.sh build ${c#* }" ;;
   *"neat_bench pole"*) c="$c --runs 2" ;;
   *"bench/python_xor.py"*) c="${c/--rounds 9/--rounds 1}" ;;
+  *"bench/python_envs.py"*) c="${c/--rounds 5/--rounds 1}" ;;
   esac
   echo "$c"
 }
