@@ -24,13 +24,13 @@ import argparse
 import json
 import os
 import time
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 import torch
 from stable_baselines3 import PPO
 from stable_baselines3.common.callbacks import BaseCallback
-from stable_baselines3.common.vec_env import DummyVecEnv, VecMonitor
+from stable_baselines3.common.vec_env import VecEnv, VecMonitor
 
 import neat_duel as nd
 from neat_duel import envs
@@ -47,19 +47,79 @@ class NeatSigmoid(torch.nn.Module):
         return torch.sigmoid(SLOPE * x)
 
 
-class SigmoidActions(envs.DuelVsEnv):
-    """DuelVsEnv whose action is the actor's pre-activation: the robot's motor outputs are its runtime sigmoid (what
-    the exported network's output nodes compute), so a policy's mean action is exactly the network's output."""
+class SelfPlayVecEnv(VecEnv):
+    """K duels stepped together in C (neat_duel.envs.DuelVecEnv) as one Stable-Baselines3 VecEnv: in each game the
+    learner plays one side (drawn per game) against an opponent drawn per game from the pool, a runtime network
+    stepped on its own observation (neat_duel.envs.network_action), as DuelVsEnv does for one game. The learner's
+    action is the actor's pre-activation: the robot's motor outputs are its runtime sigmoid (what the exported
+    network's output nodes compute), so a policy's mean action is exactly the network's output."""
 
-    def __init__(self, **kw: Any) -> None:
-        super().__init__(**kw)
+    render_mode = None  # nothing to draw (Stable-Baselines3 asks)
+
+    def __init__(self, num_games: int, layouts: str, seed: int) -> None:
         import gymnasium
 
-        self.action_space = gymnasium.spaces.Box(-4.0, 4.0, shape=(envs.N_ACTIONS,), dtype=np.float32)
+        act = gymnasium.spaces.Box(-4.0, 4.0, shape=(envs.N_ACTIONS,), dtype=np.float32)
+        obs = gymnasium.spaces.Box(-1.0, 1.0, shape=(envs.N_OBSERVATIONS,), dtype=np.float32)
+        super().__init__(num_games, obs, act)
+        self.games = envs.DuelVecEnv(num_games, layouts=layouts)
+        self.rng = np.random.default_rng(seed)
+        self.seed_value = seed
+        self.pool: list[nd.Network] = []
+        self.side = np.zeros(num_games, dtype=np.int64)
+        self.who = np.zeros(num_games, dtype=np.int64)
+        self.obs = np.zeros((num_games, 2, envs.N_OBSERVATIONS), dtype=np.float32)
+        self.both = np.zeros((num_games, 2, envs.N_ACTIONS), dtype=np.float32)
+        self.actions = np.zeros((num_games, envs.N_ACTIONS), dtype=np.float32)
 
-    def step(self, action: Any) -> Any:
-        z = np.clip(np.asarray(action, dtype=np.float64), -4.0, 4.0)
-        return super().step((1.0 / (1.0 + np.exp(-SLOPE * z))).astype(np.float32))
+    def set_opponents(self, pool: list[nd.Network]) -> None:
+        """The pool games draw their opponents from, from each game's next start on."""
+        self.pool = list(pool)
+
+    def _draw(self, idx: np.ndarray) -> None:
+        self.side[idx] = self.rng.integers(2, size=len(idx))
+        self.who[idx] = self.rng.integers(len(self.pool), size=len(idx))
+
+    def reset(self) -> np.ndarray:
+        self.obs, _ = self.games.reset(seed=self.seed_value)
+        self._draw(np.arange(self.num_envs))
+        return self.obs[np.arange(self.num_envs), self.side]
+
+    def step_async(self, actions: np.ndarray) -> None:
+        self.actions = np.asarray(actions, dtype=np.float64).reshape(self.num_envs, envs.N_ACTIONS)
+
+    def step_wait(self) -> Any:
+        k = np.arange(self.num_envs)
+        z = np.clip(self.actions, -4.0, 4.0)
+        self.both[k, self.side] = 1.0 / (1.0 + np.exp(-SLOPE * z))
+        for g in range(self.num_envs):  # each opponent on its own observation (feed-forward: no state to keep)
+            self.both[g, 1 - self.side[g]] = envs.network_action(self.pool[self.who[g]], self.obs[g, 1 - self.side[g]])
+        obs, rew, term, trunc, info = self.games.step(self.both)
+        done = term | trunc
+        mine = rew[k, self.side]
+        infos: list[dict[str, Any]] = [{} for _ in k]
+        for g in np.flatnonzero(done):
+            infos[g]["terminal_observation"] = info["final_obs"][g, self.side[g]].copy()
+            infos[g]["TimeLimit.truncated"] = bool(trunc[g] and not term[g])
+        if done.any():
+            self._draw(np.flatnonzero(done))
+        self.obs = obs
+        return obs[k, self.side].copy(), mine.astype(np.float32), done, infos
+
+    def close(self) -> None:
+        self.games.close()
+
+    def get_attr(self, attr_name: str, indices: Any = None) -> list[Any]:
+        return [getattr(self, attr_name)] * len(self._get_indices(indices))
+
+    def set_attr(self, attr_name: str, value: Any, indices: Any = None) -> None:
+        setattr(self, attr_name, value)
+
+    def env_method(self, method_name: str, *args: Any, indices: Any = None, **kw: Any) -> list[Any]:
+        return [getattr(self, method_name)(*args, **kw)]
+
+    def env_is_wrapped(self, wrapper_class: Any, indices: Any = None) -> list[bool]:
+        return [False] * len(self._get_indices(indices))
 
 
 def policy_genome(model: PPO) -> nd.Genome:
@@ -148,7 +208,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--out", required=True, help="the run's directory (continued when it holds a run)")
     ap.add_argument("--games", type=int, default=QUICK_GAMES, help="the budget in games (default: a quick coevolution's)")
     ap.add_argument("--snapshot-games", type=int, default=None, help="games between snapshots (default: budget / 50)")
-    ap.add_argument("--envs", type=int, default=8, help="games played side by side")
+    ap.add_argument("--envs", type=int, default=64, help="games played side by side (stepped together in C)")
     ap.add_argument("--hidden", type=int, default=16, help="the policy's hidden units")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--layouts", default="comparison", help="training or comparison food layouts")
@@ -167,16 +227,12 @@ def main(argv: list[str] | None = None) -> int:
         every = a.snapshot_games or max(1, a.games // 50)
         state = {"games": 0, "budget": a.games, "seed": a.seed, "every": every, "next_snapshot": 0, "pool": []}
 
-    def make(i: int) -> Callable[[], SigmoidActions]:
-        return lambda: SigmoidActions(opponent="idle", side="random", layouts=a.layouts)
-
-    venv = VecMonitor(DummyVecEnv([make(i) for i in range(a.envs)]))
-    venv.seed(a.seed)
+    venv = VecMonitor(SelfPlayVecEnv(a.envs, a.layouts, a.seed + state["games"]))
     if resumed:
         model = PPO.load(os.path.join(a.out, "model.zip"), env=venv, device="cpu")
     else:
         kw = dict(net_arch=dict(pi=[a.hidden], vf=[64, 64]), activation_fn=NeatSigmoid)
-        model = PPO("MlpPolicy", venv, policy_kwargs=kw, n_steps=1024, batch_size=256, seed=a.seed, device="cpu",
+        model = PPO("MlpPolicy", venv, policy_kwargs=kw, n_steps=256, batch_size=1024, seed=a.seed, device="cpu",
                     verbose=0)
         snapshot(model, a.out, state)  # the pool starts with the untrained policy, as a coevolution's first hosts
     venv.env_method("set_opponents", pool_networks(a.out, state))
