@@ -33,7 +33,8 @@ void duel_html_common(FILE *f, const char *kind, const char *title);
 
 /* A duel's members (kind "duel"): the world, the food, both sides and
  * their networks, the outcome and every frame. Writes the object whole,
- * braces included. -1 (nothing written) when out of memory. */
+ * braces included. -1 when out of memory (what was written is then
+ * incomplete: the callers write to memory and discard it). */
 int duel_html_duel_json(FILE *f, const duel_replay *r, const char *title);
 /* A whole page of one duel: duel_html_open, duel_html_duel_json, duel_html_close. */
 int duel_html_duel_page(FILE *f, const duel_replay *r, const char *title);
@@ -74,7 +75,8 @@ typedef struct duel_html_report {
  * embedded, OUT/games/level-KK-vs-*.html: each level against the level below
  * and against every built-in strategy, on the training food, the level west,
  * in the run's world. 0; 2 with the line in msg (bad input or a refused
- * output: nothing written); 1 with the line in msg (a write failed). */
+ * output: no page written, though OUT may have been created); 1 with the
+ * line in msg (a write failed). */
 int duel_html_run_report(const char *run, const char *out, const duel_html_report *o, char *msg, size_t cap);
 /* An experiment's pages (after `experiment report`: DIR/report/): OUT/index.html
  * (Table 1, the figures, a page per method) and OUT/METHOD.html (the method's
