@@ -394,7 +394,8 @@ int duel_mkdir(const char *path)
     return -1;
 }
 
-int duel_file_write_with_msg(const char *path, duel_write_fn write, const void *ctx, char *msg, size_t cap)
+int duel_file_write_checked_msg(const char *path, duel_write_fn write, const void *ctx, const int *failed, char *msg,
+                                size_t cap)
 {
     char *text = NULL, esc[1100];
     size_t len = 0;
@@ -406,7 +407,8 @@ int duel_file_write_with_msg(const char *path, duel_write_fn write, const void *
         return 1;
     }
     write(mem, ctx);
-    if (fclose(mem) != 0) {
+    /* a writer that could not finish (out of memory) says so in *failed: nothing is put in place then */
+    if (fclose(mem) != 0 || (failed != NULL && *failed)) {
         snprintf(msg, cap, "%s: out of memory", esc);
         free(text);
         return 1;
@@ -417,6 +419,11 @@ int duel_file_write_with_msg(const char *path, duel_write_fn write, const void *
         return 0;
     snprintf(msg, cap, "%s: %s: %s", esc, r == -1 ? "cannot write" : "write failed", strerror(errno));
     return r == -1 ? 2 : 1;
+}
+
+int duel_file_write_with_msg(const char *path, duel_write_fn write, const void *ctx, char *msg, size_t cap)
+{
+    return duel_file_write_checked_msg(path, write, ctx, NULL, msg, cap);
 }
 
 int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx)

@@ -93,6 +93,10 @@ typedef void (*duel_write_fn)(FILE *f, const void *ctx);
 int duel_file_write_with(const char *path, duel_write_fn write, const void *ctx);
 /* The same, printing nothing: the status with the line in msg (the path escaped). */
 int duel_file_write_with_msg(const char *path, duel_write_fn write, const void *ctx, char *msg, size_t cap);
+/* The same, for a writer that can fail (out of memory): when *failed is set after write(f, ctx) returns, nothing is
+ * put in place and the status is 1 ("out of memory"). */
+int duel_file_write_checked_msg(const char *path, duel_write_fn write, const void *ctx, const int *failed, char *msg,
+                                size_t cap);
 
 /* A working directory's lock: the directory itself and DIR/.lock, both
  * flock'ed (the kernel drops them when the process ends, even by kill -9).

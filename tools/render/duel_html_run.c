@@ -53,17 +53,10 @@ static void html_write_game(FILE *f, const void *ctx)
 static int html_write_game_file(const char *path, const duel_replay *rep, const char *title, char *msg, size_t cap)
 {
     html_game_page p;
-    int st;
     p.rep = rep;
     p.title = title;
     p.err = 0;
-    st = duel_file_write_with_msg(path, html_write_game, &p, msg, cap);
-    if (st == 0 && p.err) {
-        unlink(path);
-        snprintf(msg, cap, "out of memory");
-        st = 1;
-    }
-    return st;
+    return duel_file_write_checked_msg(path, html_write_game, &p, &p.err, msg, cap);
 }
 
 int duel_html_write_duel(const char *cmd, const char *path, const duel_replay *r, const char *title, int force,
@@ -673,11 +666,7 @@ static int html_write_page(html_ctx *c, const char *path, duel_write_fn fn, cons
 {
     int st;
     c->err = 0;
-    st = duel_file_write_with_msg(path, fn, ctx, c->msg, c->cap);
-    if (st == 0 && c->err) {
-        unlink(path);
-        return c->err;
-    }
+    st = duel_file_write_checked_msg(path, fn, ctx, &c->err, c->msg, c->cap);
     if (st == 0)
         html_wrote(c, path);
     return st;
