@@ -558,6 +558,19 @@ static void html_ladder_against(FILE *f, const html_run *r)
     fputc(']', f);
 }
 
+/* What a run page and an experiment's method page show of each run: ,"generations","levels","ladder_against". */
+static void html_run_members(FILE *f, html_ctx *c, const html_run *r)
+{
+    char path[HTML_PATH + 32];
+    snprintf(path, sizeof path, "%s/generations.csv", r->dir);
+    fputs(",\"generations\":", f);
+    html_csv_file(f, path, NULL);
+    fputs(",\"levels\":", f);
+    html_levels(f, c, r);
+    fputs(",\"ladder_against\":", f);
+    html_ladder_against(f, r);
+}
+
 /* 1 when dir holds a config.ini (plan.ini) a run (experiment) wrote. */
 static int html_dir_marked(const char *dir, const char *file, const char *mark)
 {
@@ -646,16 +659,10 @@ static void html_write_run(FILE *f, const void *ctx)
     duel_html_str(f, r->dir);
     fputs(",\"config\":", f);
     html_config(f, r->dir);
-    snprintf(path, sizeof path, "%s/generations.csv", r->dir);
-    fputs(",\"generations\":", f);
-    html_csv_file(f, path, NULL);
     snprintf(path, sizeof path, "%s/strength.csv", r->dir);
     fputs(",\"strength\":", f);
     html_csv_file(f, path, NULL);
-    fputs(",\"levels\":", f);
-    html_levels(f, c, r);
-    fputs(",\"ladder_against\":", f);
-    html_ladder_against(f, r);
+    html_run_members(f, c, r);
     fputs(",\"embedded\":[", f);
     html_embedded(f, c, r, &first);
     fputs("]}", f);
@@ -889,18 +896,11 @@ static void html_write_exp(FILE *f, const void *ctx)
     }
     fputs("],\"runs\":[", f);
     for (i = 0; i < p->n_runs; i++) {
-        char path[HTML_PATH + 32];
         const html_run *r = &p->runs[i];
         const char *base = strrchr(r->dir, '/');
         fputs(i ? ",{\"name\":" : "{\"name\":", f);
         duel_html_str(f, base != NULL ? base + 1 : r->dir);
-        snprintf(path, sizeof path, "%s/generations.csv", r->dir);
-        fputs(",\"generations\":", f);
-        html_csv_file(f, path, NULL);
-        fputs(",\"levels\":", f);
-        html_levels(f, c, r);
-        fputs(",\"ladder_against\":", f);
-        html_ladder_against(f, r);
+        html_run_members(f, c, r);
         fputc('}', f);
     }
     fputs("],\"embedded\":[", f);
