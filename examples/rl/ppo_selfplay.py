@@ -157,7 +157,6 @@ class SelfPlay(BaseCallback):
     def __init__(self, out: str, every: int, budget: int, state: dict[str, Any]) -> None:
         super().__init__()
         self.out, self.every, self.budget, self.state = out, every, budget, state
-        self.t0 = time.time()
 
     def _on_step(self) -> bool:
         dones = self.locals["dones"]
@@ -165,13 +164,22 @@ class SelfPlay(BaseCallback):
         if self.state["games"] >= self.state["next_snapshot"]:
             snapshot(self.model, self.out, self.state)
             self.training_env.env_method("set_opponents", pool_networks(self.out, self.state))
-            cpu = time.process_time()
             print(f"games {self.state['games']:,} of {self.budget:,}: pool {len(self.state['pool'])}, "
-                  f"{self.num_timesteps:,} learner steps, {time.time() - self.t0:.0f} s, CPU {cpu:.0f} s", flush=True)
+                  f"{self.num_timesteps:,} learner steps, {self.state['seconds']:.0f} s, "
+                  f"CPU {self.state['cpu_seconds']:.0f} s", flush=True)
         return self.state["games"] < self.budget
 
 
+_clock = [time.time(), time.process_time()]  # wall and CPU time (user+sys, all threads) at the last snapshot
+
+
 def snapshot(model: PPO, out: str, state: dict[str, Any]) -> None:
+    """Adds the current policy to the pool and saves everything a continuation needs, with the time spent so far
+    (summed over the sessions of a run that was stopped and continued)."""
+    now = [time.time(), time.process_time()]
+    state["seconds"] = state.get("seconds", 0.0) + now[0] - _clock[0]
+    state["cpu_seconds"] = state.get("cpu_seconds", 0.0) + now[1] - _clock[1]
+    _clock[:] = now
     clamp_actor(model)
     name = f"snap-{state['games']:09d}.genome"
     policy_genome(model).save(os.path.join(out, "pool", name))
@@ -236,7 +244,6 @@ def main(argv: list[str] | None = None) -> int:
                     verbose=0)
         snapshot(model, a.out, state)  # the pool starts with the untrained policy, as a coevolution's first hosts
     venv.env_method("set_opponents", pool_networks(a.out, state))
-    t0, c0 = time.time(), time.process_time()
     if state["games"] < state["budget"]:
         model.learn(total_timesteps=10**12, callback=SelfPlay(a.out, state["every"], a.games, state),
                     reset_num_timesteps=not resumed)
@@ -244,7 +251,7 @@ def main(argv: list[str] | None = None) -> int:
     final = os.path.join(a.out, "ppo-final.genome")
     policy_genome(model).save(final)
     res = {"games": state["games"], "learner_steps": int(model.num_timesteps), "pool": len(state["pool"]),
-           "seconds": time.time() - t0, "cpu_seconds": time.process_time() - c0, **place(final, a.against)}
+           "seconds": round(state["seconds"]), "cpu_seconds": round(state["cpu_seconds"]), **place(final, a.against)}
     with open(os.path.join(a.out, "result.json"), "w") as f:
         json.dump(res, f, indent=1)
     print(f"{res['games']:,} games, {res['learner_steps']:,} learner steps; the final policy: {final}")
