@@ -47,7 +47,7 @@ def test_experiment_pages(tmp_path: pathlib.Path) -> None:
     methods = [line.split(",")[0] for line in (exp / "report" / "table1.csv").read_text().splitlines()[1:]]
     assert n == len(methods) + 1
     for m in methods:
-        assert (exp / "report" / "html" / f"{m}.html").is_file()
+        assert (exp / "report" / "html" / f"method-{m}.html").is_file()
 
 
 def test_refusals(tmp_path: pathlib.Path) -> None:

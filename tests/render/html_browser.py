@@ -256,8 +256,8 @@ def main():
         d.save_screenshot(os.path.join(out, "experiment.png"))
         methods = [r["method"] for r in trace_rows(os.path.join(exp, "report", "table1.csv"))]
         for m in methods:
-            open_page(d, os.path.join(html, m + ".html"), "experiment")
-            check(d.execute_script("return window.pwned === undefined"), f"{m}.html ran script")
+            open_page(d, os.path.join(html, "method-" + m + ".html"), "experiment")
+            check(d.execute_script("return window.pwned === undefined"), f"method-{m}.html ran script")
         d.save_screenshot(os.path.join(out, "experiment-method.png"))
     finally:
         d.quit()

@@ -81,8 +81,16 @@ cp -r "$fixture" exp
 "$duel" experiment report exp --html > e.txt 2> /dev/null
 grep -q "pages in exp/report/html (games in games/)" e.txt || fail "experiment report --html said: $(cat e.txt)"
 for m in $(tail -n +2 exp/report/table1.csv | cut -d, -f1); do
-  [ -f "exp/report/html/$m.html" ] || fail "no page for method $m"
-  grep -q "\"$m.html\"" exp/report/html/index.html || fail "the index does not link $m.html"
+  [ -f "exp/report/html/method-$m.html" ] || fail "no page for method $m"
+  grep -q "\"method-$m.html\"" exp/report/html/index.html || fail "the index does not link method-$m.html"
 done
+# a method called "index" has its own page beside the index (its page was once replaced by the index, written last)
+cp -r "$fixture" idx
+sed -i 's/^\[method simplify\]/[method index]/' idx/plan.ini
+mv idx/configs/simplify.ini idx/configs/index.ini && mv idx/runs/simplify-1 idx/runs/index-1
+"$duel" experiment report idx --html --games none > /dev/null 2>&1 || fail "experiment report --html with a method index failed"
+grep -q '"label":"simplify"' idx/report/html/method-index.html && fail "method-index.html is not the page of method index"
+grep -q '"method":"index"' idx/report/html/method-index.html || fail "no page for the method called index"
+grep -q '"method":null' idx/report/html/index.html || fail "index.html is not the experiment's index"
 expect_refusal 2 "not an experiment directory" experiment report run --html
 echo "html_cli: all checks passed"

@@ -361,6 +361,20 @@ static void html_safe_name(char *dst, size_t cap, const char *src)
     dst[k] = '\0';
 }
 
+/* A method's page: "method-NAME.html", never "index.html" whatever the method is called (a plan may name a method
+   "index"; its page would have been replaced by the index, written last). */
+static void html_method_page(char *dst, size_t cap, const char *method)
+{
+    static const char pre[] = "method-";
+    if (cap < sizeof pre + 5) {
+        dst[0] = '\0';
+        return;
+    }
+    memcpy(dst, pre, sizeof pre - 1);
+    html_safe_name(dst + sizeof pre - 1, cap - (sizeof pre - 1) - 5, method);
+    strcat(dst, ".html");
+}
+
 static void html_game_href(char *buf, size_t cap, const html_run *r, uint32_t i, int g)
 {
     if (g == 0)
@@ -886,8 +900,7 @@ static void html_write_exp(FILE *f, const void *ctx)
     }
     fputs("],\"pages\":[", f);
     for (i = 0; p->method == NULL && i < e->n_methods; i++) {
-        html_safe_name(name, sizeof name - 8, e->methods[i]);
-        strcat(name, ".html");
+        html_method_page(name, sizeof name, e->methods[i]);
         fputs(i ? ",{\"label\":" : "{\"label\":", f);
         duel_html_str(f, e->methods[i]);
         fputs(",\"href\":", f);
@@ -952,8 +965,8 @@ int duel_html_experiment_report(const char *dir, const char *out, const duel_htm
         for (i = 0; st == 0 && !o->embed && i < n; i++)
             st = html_game_pages(&c, &runs[i], 1);
         if (st == 0) {
-            html_safe_name(name, sizeof name - 8, e.methods[m]);
-            snprintf(path, sizeof path, "%s/%s.html", out, name);
+            html_method_page(name, sizeof name, e.methods[m]);
+            snprintf(path, sizeof path, "%s/%s", out, name);
             if (access(path, F_OK) == 0)
                 st = duel_out_own_allowed_msg("experiment", "--html", path, &html_kind, o->force, NULL, 0, msg, cap);
         }
