@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # fuzz.sh SECONDS [FUZZ_BUILD_DIR [HARNESS...]] - every libFuzzer harness (or those named: blob pop genome coev ini lcm_log
-# lcm_msg rundir mpi_wire rules) for SECONDS each on a copy of its seed corpus; prints each one's executions, coverage and crashes,
+# lcm_msg rundir mpi_wire rules html) for SECONDS each on a copy of its seed corpus; prints each one's executions, coverage and crashes,
 # and exits 1 if any crashed, hung or leaked (the input is kept in FUZZ_BUILD_DIR/crashes/).
 set -euo pipefail
 secs=${1:?usage: scripts/fuzz.sh SECONDS [FUZZ_BUILD_DIR [HARNESS...]]}
 root=$(cd "$(dirname "$0")/.." && pwd)
 fuzz=$(realpath "${2:-$root/build-fuzz}")
 shift $(( $# < 2 ? $# : 2 ))
-harnesses=${*:-blob pop genome coev ini lcm_log lcm_msg rundir mpi_wire rules}
+harnesses=${*:-blob pop genome coev ini lcm_log lcm_msg rundir mpi_wire rules html}
 crashes=$fuzz/crashes
 mkdir -p "$crashes"
 status=0

@@ -12,7 +12,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # inputs that once crashed a harness (regress-*) are kept, and checkpoints of version 2 (v2-*), which still load
 # but which nothing writes any more
-for d in blob pop genome coev ini lcm_log lcm_msg rundir; do
+for d in blob pop genome coev ini lcm_log lcm_msg rundir html; do
   mkdir -p "$c/$d"
   find "$c/$d" -type f ! -name 'regress-*' ! -name 'v2-*' -delete
 done
@@ -50,4 +50,9 @@ cp "$work/r3/generations.csv" "$c/rundir/generations.csv"
 "$duel" compare "$work/r3" --against "$work/r1" > /dev/null
 cp "$work/r3/compare-cache.csv" "$c/rundir/compare-cache.csv"
 printf 'generation,population\n0,A\n1,B\n2,A' > "$c/rundir/torn.csv"
+
+# what the web pages show: a run's records, its ladder, and an experiment's tables (the committed tiny experiment)
+"$duel" ladder "$work/r3" > /dev/null
+for f in generations.csv config.ini ladder.csv; do cp "$work/r3/$f" "$c/html/$f"; done
+cp "$root/tests/tools/fixtures/experiment-tiny/report/table1.csv" "$root/tests/tools/fixtures/experiment-tiny/report/runs.csv" "$c/html/"
 du -sh "$c"/* | sed "s|$c/||"

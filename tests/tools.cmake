@@ -35,8 +35,10 @@ if(NEAT_FUZZ)
   target_include_directories(fuzz_mpi_wire PRIVATE ${PROJECT_SOURCE_DIR}/tools/mpi)
   target_link_libraries(fuzz_mpi_wire PRIVATE neattools duelsim nrt)
 
+  neat_add_fuzz(fuzz_html)
+  target_link_libraries(fuzz_html PRIVATE duelhtml)
   add_custom_target(fuzzers DEPENDS fuzz_blob fuzz_pop fuzz_genome fuzz_coev fuzz_rules fuzz_ini fuzz_lcm_log fuzz_lcm_msg fuzz_rundir
-                  fuzz_mpi_wire)
+                  fuzz_mpi_wire fuzz_html)
 
   add_executable(make_corpus fuzz/make_corpus.c)
   target_compile_options(make_corpus PRIVATE ${NEAT_WARNINGS})

@@ -8,6 +8,7 @@
 
 #include "duel_files.h"
 #include "duel_html.h"
+#include "duel_html_data.h"
 #include "duel_levels.h"
 #include "duel_outputs.h"
 #include "duel_text.h"
@@ -99,94 +100,6 @@ static char *html_read_quiet(const char *path, size_t *len)
     return text;
 }
 
-/* One CSV field as JSON: a number when the whole field is one, else a string. */
-static void html_field(FILE *f, const char *s, size_t n)
-{
-    char buf[256];
-    char *end;
-    double v;
-    if (n > 0 && n < sizeof buf) {
-        memcpy(buf, s, n);
-        buf[n] = '\0';
-        v = strtod(buf, &end);
-        /* a decimal number only: not "0x1f" (hexadecimal to strtod), "inf" or "nan" */
-        if (*end == '\0' && (buf[0] == '-' || (buf[0] >= '0' && buf[0] <= '9')) && strpbrk(buf, "xXpP") == NULL &&
-            v == v && v - v == 0) {
-            fprintf(f, "%.10g", v);
-            return;
-        }
-    }
-    {
-        char *t = (char *)malloc(n + 1);
-        if (t == NULL) {
-            fputs("null", f);
-            return;
-        }
-        memcpy(t, s, n);
-        t[n] = '\0';
-        duel_html_str(f, t);
-        free(t);
-    }
-}
-
-/* A CSV text (the project's own: no quoted field holds a comma or a line end) as
- * {"columns": [...], "rows": [[...], ...]}: the first line names the columns. */
-static void html_csv_table(FILE *f, const char *text, size_t len, const char *only)
-{
-    size_t i = 0;
-    int line = 0;
-    fputs("{\"columns\":[", f);
-    while (i < len) {
-        size_t e = i, fs;
-        int col = 0;
-        while (e < len && text[e] != '\n')
-            e++;
-        if (e > i && text[e - 1] == '\r')
-            e--;
-        if (e == i) { /* an empty line */
-            i = e + 1;
-            continue;
-        }
-        if (line > 0 && only != NULL) { /* only the rows whose first field is this */
-            size_t ol = strlen(only);
-            if (!(e - i >= ol && memcmp(text + i, only, ol) == 0 && (e - i == ol || text[i + ol] == ','))) {
-                i = e + 1;
-                continue;
-            }
-        }
-        if (line == 1)
-            fputs("],\"rows\":[[", f);
-        else if (line > 1)
-            fputs("],[", f);
-        for (fs = i; fs <= e; col++) {
-            size_t fe = fs;
-            while (fe < e && text[fe] != ',')
-                fe++;
-            if (col)
-                fputc(',', f);
-            if (line == 0) {
-                char *t = (char *)malloc(fe - fs + 1);
-                if (t != NULL) {
-                    memcpy(t, text + fs, fe - fs);
-                    t[fe - fs] = '\0';
-                    duel_html_str(f, t);
-                    free(t);
-                } else {
-                    fputs("\"\"", f);
-                }
-            } else {
-                html_field(f, text + fs, fe - fs);
-            }
-            fs = fe + 1;
-        }
-        line++;
-        i = e + 1;
-        while (i < len && (text[i] == '\n' || text[i] == '\r'))
-            i++;
-    }
-    fputs(line <= 1 ? "],\"rows\":[]}" : "]]}", f);
-}
-
 /* A file's CSV table, or null when the file does not exist or cannot be read. */
 static void html_csv_file(FILE *f, const char *path, const char *only)
 {
@@ -196,127 +109,25 @@ static void html_csv_file(FILE *f, const char *path, const char *only)
         fputs("null", f);
         return;
     }
-    html_csv_table(f, text, len, only);
+    duel_html_csv_table(f, text, len, only);
     free(text);
 }
 
-/* config.ini's entries as [[section, key, value], ...] (comments and blank lines left out). */
+/* RUN/config.ini's entries as [[section, key, value], ...] ([] when it cannot be read). */
 static void html_config(FILE *f, const char *run)
 {
-    char path[HTML_PATH], *text = NULL, section[128] = "", *line, *save = NULL;
+    char path[HTML_PATH], *text;
     size_t len = 0;
-    int first = 1;
     snprintf(path, sizeof path, "%s/config.ini", run);
-    fputc('[', f);
-    if ((text = html_read_quiet(path, &len)) != NULL) {
-        for (line = strtok_r(text, "\n", &save); line != NULL; line = strtok_r(NULL, "\n", &save)) {
-            char *eq, *k, *v, *e;
-            while (*line == ' ' || *line == '\t')
-                line++;
-            if (*line == ';' || *line == '#' || *line == '\0' || *line == '\r')
-                continue;
-            if (*line == '[') {
-                e = strchr(line, ']');
-                if (e != NULL) {
-                    *e = '\0';
-                    snprintf(section, sizeof section, "%s", line + 1);
-                }
-                continue;
-            }
-            if ((eq = strchr(line, '=')) == NULL)
-                continue;
-            *eq = '\0';
-            k = line;
-            v = eq + 1;
-            for (e = eq; e > k && (e[-1] == ' ' || e[-1] == '\t'); e--)
-                e[-1] = '\0';
-            while (*v == ' ' || *v == '\t')
-                v++;
-            for (e = v + strlen(v); e > v && (e[-1] == ' ' || e[-1] == '\r' || e[-1] == '\t'); e--)
-                e[-1] = '\0';
-            fputs(first ? "[" : ",[", f);
-            duel_html_str(f, section);
-            fputc(',', f);
-            duel_html_str(f, k);
-            fputc(',', f);
-            duel_html_str(f, v);
-            fputc(']', f);
-            first = 0;
-        }
+    if ((text = html_read_quiet(path, &len)) == NULL) {
+        fputs("[]", f);
+        return;
     }
+    duel_html_config(f, text);
     free(text);
-    fputc(']', f);
 }
 
 /* ---- a run's levels and their games ---- */
-
-/* A run's ladder.csv: for level i, the wins and losses against each builtin. */
-typedef struct html_ladder {
-    int have;              /* the file was there with rows */
-    uint32_t n;            /* rows */
-    uint32_t *level;       /* [n] */
-    uint32_t (*wl)[DUEL_N_BUILTINS][2];
-} html_ladder;
-
-static void html_ladder_free(html_ladder *l)
-{
-    free(l->level);
-    free(l->wl);
-    memset(l, 0, sizeof *l);
-}
-
-/* RUN/ladder.csv read loosely (a page shows what is there): columns NAME_wins and NAME_losses per builtin. */
-static void html_ladder_read(html_ladder *l, const char *run)
-{
-    char path[HTML_PATH], *text = NULL, *line, *save = NULL;
-    int col_w[DUEL_N_BUILTINS], col_l[DUEL_N_BUILTINS], b, hdr = 1;
-    size_t len = 0, rows = 0;
-    memset(l, 0, sizeof *l);
-    snprintf(path, sizeof path, "%s/ladder.csv", run);
-    if ((text = html_read_quiet(path, &len)) == NULL)
-        return;
-    for (b = 0; b < DUEL_N_BUILTINS; b++)
-        col_w[b] = col_l[b] = -1;
-    for (size_t i = 0; i < len; i++)
-        rows += text[i] == '\n';
-    l->level = (uint32_t *)calloc(rows + 1, sizeof *l->level);
-    l->wl = (uint32_t(*)[DUEL_N_BUILTINS][2])calloc(rows + 1, sizeof *l->wl);
-    if (l->level == NULL || l->wl == NULL) {
-        html_ladder_free(l);
-        free(text);
-        return;
-    }
-    for (line = strtok_r(text, "\n", &save); line != NULL; line = strtok_r(NULL, "\n", &save)) {
-        char *fld, *s2 = NULL;
-        int c = 0;
-        if (hdr) {
-            for (fld = strtok_r(line, ",\r", &s2); fld != NULL; fld = strtok_r(NULL, ",\r", &s2), c++)
-                for (b = 0; b < DUEL_N_BUILTINS; b++) {
-                    size_t bl = strlen(duel_builtin_name(b));
-                    if (strncmp(fld, duel_builtin_name(b), bl) == 0 && strcmp(fld + bl, "_wins") == 0)
-                        col_w[b] = c;
-                    if (strncmp(fld, duel_builtin_name(b), bl) == 0 && strcmp(fld + bl, "_losses") == 0)
-                        col_l[b] = c;
-                }
-            hdr = 0;
-            continue;
-        }
-        for (fld = strtok_r(line, ",\r", &s2); fld != NULL; fld = strtok_r(NULL, ",\r", &s2), c++) {
-            unsigned long v = strtoul(fld, NULL, 10);
-            if (c == 0)
-                l->level[l->n] = (uint32_t)v;
-            for (b = 0; b < DUEL_N_BUILTINS; b++) {
-                if (c == col_w[b])
-                    l->wl[l->n][b][0] = (uint32_t)v;
-                if (c == col_l[b])
-                    l->wl[l->n][b][1] = (uint32_t)v;
-            }
-        }
-        l->n++;
-    }
-    l->have = l->n > 0;
-    free(text);
-}
 
 /* What the levels' games need: the run, its world, its levels, where pages go. */
 typedef struct html_run {
@@ -325,7 +136,7 @@ typedef struct html_run {
     duel_rules rules;
     duel_level *levels;
     uint32_t n_levels;
-    html_ladder ladder;
+    duel_html_ladder ladder; /* RUN/ladder.csv's results (n = 0 when there are none) */
 } html_run;
 
 /* The writer's state: options, where the pages go, the embedded games counted, the first error. */
@@ -485,9 +296,9 @@ static void html_levels(FILE *f, html_ctx *c, const html_run *r)
                 (unsigned)lv->generation);
         duel_html_str(f, lv->pop);
         fprintf(f, ",\"hidden\":%u,\"connections\":%u,\"ladder\":", (unsigned)lv->hidden, (unsigned)lv->conns);
-        for (k = 0; r->ladder.have && k < r->ladder.n && r->ladder.level[k] != lv->level; k++)
+        for (k = 0; k < r->ladder.n && r->ladder.level[k] != lv->level; k++)
             ;
-        if (!r->ladder.have || k == r->ladder.n) {
+        if (r->ladder.n == 0 || k == r->ladder.n) {
             fputs("null", f);
         } else {
             uint32_t tw = 0, tl = 0;
@@ -565,7 +376,7 @@ static void html_ladder_against(FILE *f, const html_run *r)
 {
     int b;
     fputc('[', f);
-    for (b = 0; r->ladder.have && b < DUEL_N_BUILTINS; b++) {
+    for (b = 0; r->ladder.n > 0 && b < DUEL_N_BUILTINS; b++) {
         fputs(b ? "," : "", f);
         duel_html_str(f, duel_builtin_name(b));
     }
@@ -614,7 +425,21 @@ static int html_open_run(html_run *r, const char *dir, const char *prefix, char 
         return 2;
     if (duel_levels_read_msg(dir, &r->levels, &r->n_levels, msg, cap) != 0)
         return 2;
-    html_ladder_read(&r->ladder, dir);
+    {
+        char path[HTML_PATH + 32], *text;
+        size_t len = 0;
+        snprintf(path, sizeof path, "%s/ladder.csv", dir);
+        if ((text = html_read_quiet(path, &len)) != NULL) {
+            int bad = duel_html_ladder_parse(&r->ladder, text, len);
+            free(text);
+            if (bad) {
+                snprintf(msg, cap, "%s: out of memory", duel_text_escape(path, esc, sizeof esc));
+                duel_levels_free(r->levels, r->n_levels);
+                r->levels = NULL;
+                return 1;
+            }
+        }
+    }
     return 0;
 }
 
@@ -622,7 +447,7 @@ static void html_close_run(html_run *r)
 {
     if (r->levels != NULL)
         duel_levels_free(r->levels, r->n_levels);
-    html_ladder_free(&r->ladder);
+    duel_html_ladder_free(&r->ladder);
     memset(r, 0, sizeof *r);
 }
 
@@ -754,48 +579,6 @@ static void html_exp_free(html_exp *e)
     free(e->table1);
 }
 
-/* Column col (0 or 1) of every data row of a CSV text, strdup'ed into *out. -1 when out of memory. */
-static int html_csv_column(const char *text, size_t len, int col, char ***out, size_t *n)
-{
-    size_t i = 0, cap = 0;
-    int line = 0;
-    *out = NULL;
-    *n = 0;
-    while (i < len) {
-        size_t e = i, s, t;
-        while (e < len && text[e] != '\n')
-            e++;
-        if (line++ > 0 && e > i) {
-            s = i;
-            if (col == 1) {
-                while (s < e && text[s] != ',')
-                    s++;
-                s++;
-            }
-            for (t = s; t < e && text[t] != ',' && text[t] != '\r'; t++)
-                ;
-            if (s <= e && t > s) {
-                char **grown;
-                if (*n == cap) {
-                    cap = cap ? 2 * cap : 16;
-                    grown = (char **)realloc(*out, cap * sizeof *grown);
-                    if (grown == NULL)
-                        return -1;
-                    *out = grown;
-                }
-                (*out)[*n] = (char *)malloc(t - s + 1);
-                if ((*out)[*n] == NULL)
-                    return -1;
-                memcpy((*out)[*n], text + s, t - s);
-                (*out)[*n][t - s] = '\0';
-                (*n)++;
-            }
-        }
-        i = e + 1;
-    }
-    return 0;
-}
-
 static int html_open_exp(html_exp *e, const char *dir, char *msg, size_t cap)
 {
     char path[HTML_PATH + 32], esc[1100], *runs = NULL;
@@ -822,12 +605,13 @@ static int html_open_exp(html_exp *e, const char *dir, char *msg, size_t cap)
         html_exp_free(e);
         return 2;
     }
-    if (html_csv_column(e->table1, e->table1_len, 0, &e->methods, &e->n_methods) != 0 ||
-        html_csv_column(runs, runs_len, 0, &m0, &n0) != 0 || html_csv_column(runs, runs_len, 1, &m1, &n1) != 0 ||
-        n0 != n1) {
+    if (duel_html_csv_column(e->table1, e->table1_len, 0, &e->methods, &e->n_methods) != 0 ||
+        duel_html_csv_column(runs, runs_len, 0, &m0, &n0) != 0 ||
+        duel_html_csv_column(runs, runs_len, 1, &m1, &n1) != 0 || n0 != n1) {
         snprintf(msg, cap, "%s/report/runs.csv: out of memory or a row without its run",
                  duel_text_escape(dir, esc, sizeof esc));
-        e->run_method = m0, e->run_name = m1, e->n_runs = n0 < n1 ? n0 : n1;
+        duel_html_strings_free(m0, n0);
+        duel_html_strings_free(m1, n1);
         free(runs);
         html_exp_free(e);
         return 2;
@@ -887,7 +671,7 @@ static void html_write_exp(FILE *f, const void *ctx)
     else
         fputs("null", f);
     fputs(",\"table1\":", f);
-    html_csv_table(f, e->table1, e->table1_len, p->method);
+    duel_html_csv_table(f, e->table1, e->table1_len, p->method);
     fputs(",\"figures\":[", f);
     if (p->method == NULL) {
         html_figure(f, e->report, "fig11-levels.svg", "Figure 11: what a difference in dominance level means, in games won", &first);
