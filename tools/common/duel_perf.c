@@ -31,14 +31,10 @@ static size_t duel_perf_sink_cap;
 static void duel_perf_say(const char *fmt, ...)
 {
     char line[8400];
-    size_t n;
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(line, sizeof line, fmt, ap);
+    duel_text_vline(line, sizeof line, fmt, ap);
     va_end(ap);
-    n = strlen(line);
-    if (n > 0 && line[n - 1] == '\n')
-        line[n - 1] = '\0';
     if (duel_perf_sink != NULL)
         snprintf(duel_perf_sink, duel_perf_sink_cap, "%s", line);
     else

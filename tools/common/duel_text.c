@@ -1,4 +1,5 @@
 /* duel_text.c - text from input made safe to print in a message: control bytes escaped, so that one message stays one line. */
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -70,4 +71,14 @@ const char *duel_esc_msg(const char *s)
     static unsigned next;
     char *b = buf[next++ % DUEL_ESC_SLOTS];
     return duel_text_escape_as(s != NULL ? s : "", b, sizeof buf[0], 0);
+}
+
+const char *duel_text_vline(char *buf, size_t cap, const char *fmt, va_list ap)
+{
+    size_t n;
+    vsnprintf(buf, cap, fmt, ap);
+    n = strlen(buf);
+    if (n > 0 && buf[n - 1] == '\n')
+        buf[n - 1] = '\0';
+    return buf;
 }

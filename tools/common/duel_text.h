@@ -2,6 +2,7 @@
 #ifndef DUEL_TEXT_H
 #define DUEL_TEXT_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -18,6 +19,10 @@ const char *duel_esc(const char *s);
  * that values escaped in it already stay as they are), in one of DUEL_ESC_SLOTS buffers of 8192 bytes; the main
  * thread's messages only. */
 const char *duel_esc_msg(const char *s);
+
+/* A message from fmt in buf (cut to fit, cap >= 1) with its trailing '\n' dropped, for a sink that ends lines
+ * itself (stderr with a prefix, a caller's buffer, a hook). buf. */
+const char *duel_text_vline(char *buf, size_t cap, const char *fmt, va_list ap);
 
 /* s as one CSV field (RFC 4180): as it is, or in double quotes (each '"' doubled) when it holds a comma, a
  * quote, a CR or a LF. */

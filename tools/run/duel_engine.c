@@ -59,13 +59,9 @@ void de_say(duel_engine *R, duel_say_kind kind, const char *fmt, ...)
 {
     char line[sizeof R->last_error];
     va_list ap;
-    size_t n;
     va_start(ap, fmt);
-    vsnprintf(line, sizeof line, fmt, ap);
+    duel_text_vline(line, sizeof line, fmt, ap);
     va_end(ap);
-    n = strlen(line);
-    if (n > 0 && line[n - 1] == '\n')
-        line[n - 1] = '\0';
     if (kind == DUEL_SAY_ERROR)
         memcpy(R->last_error, line, sizeof line);
     if (R->hooks.say != NULL)
