@@ -37,7 +37,10 @@ from neat_duel import envs
 
 SLOPE = 4.9  # the runtime's sigmoid: 1 / (1 + exp(-4.9 x)) (runtime/src/nrt_sigmoid.c)
 W_MAX = 7.99  # the runtime's weights are Q3.12: |w| < 8
-QUICK_GAMES = 614_400  # configs/quick.ini: 200 generations of 6,144 games (its generations.csv's games column)
+# configs/quick.ini plays 200 generations of 6,144 host games: each population's 128 hosts, 24 games each (its
+# generations.csv's games column, one row per population, 3,072 a row); comparisons and the dominance tournament not
+# counted
+QUICK_GAMES = 1_228_800
 
 
 class NeatSigmoid(torch.nn.Module):
@@ -92,8 +95,12 @@ class SelfPlayVecEnv(VecEnv):
         k = np.arange(self.num_envs)
         z = np.clip(self.actions, -4.0, 4.0)
         self.both[k, self.side] = 1.0 / (1.0 + np.exp(-SLOPE * z))
-        for g in range(self.num_envs):  # each opponent on its own observation (feed-forward: no state to keep)
-            self.both[g, 1 - self.side[g]] = envs.network_action(self.pool[self.who[g]], self.obs[g, 1 - self.side[g]])
+        # each opponent on its own observation (feed-forward: no state to keep), as envs.network_action steps it,
+        # with the inputs of all games converted at once
+        other = 1 - self.side
+        x = envs.network_inputs(self.obs[k, other])
+        for g in range(self.num_envs):
+            self.both[g, other[g]] = self.pool[self.who[g]].step_q15(x[g]).astype(np.float32) / np.float32(32768.0)
         obs, rew, term, trunc, info = self.games.step(self.both)
         done = term | trunc
         mine = rew[k, self.side]

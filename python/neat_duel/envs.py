@@ -100,10 +100,16 @@ def _config(config: ConfigLike) -> Optional[DuelConfig]:
 def network_inputs(obs: npt.ArrayLike) -> npt.NDArray[np.int16]:
     """A robot's 13 network inputs in Q1.15 from its observation: the bias (32767), then each value as
     ``neat_duel.q15`` converts it (floor(v * 32768 + 0.5), saturated to [-32768, 32767]; exact for an
-    observation, which is q / 32768). What ``duel_play`` feeds a network, for ``Network.step_q15``."""
-    x = np.asarray(obs, dtype=np.float64).reshape(N_OBSERVATIONS)
+    observation, which is q / 32768). What ``duel_play`` feeds a network, for ``Network.step_q15``.
+    obs (12,) gives (13,); many observations (n, 12) give (n, 13) at once, row i that of obs[i]."""
+    x = np.asarray(obs, dtype=np.float64)
+    if x.shape != (N_OBSERVATIONS,) and (x.ndim != 2 or x.shape[1] != N_OBSERVATIONS):
+        x = x.reshape(N_OBSERVATIONS)  # one observation of another shape with 12 values, as before
     q = np.clip(np.floor(np.nan_to_num(x) * 32768.0 + 0.5), -32768, 32767)
-    return np.concatenate(([32767], q)).astype(np.int16)
+    out = np.empty(x.shape[:-1] + (N_OBSERVATIONS + 1,), dtype=np.int16)
+    out[..., 0] = 32767
+    out[..., 1:] = q
+    return out
 
 
 def network_action(net: Network, obs: npt.ArrayLike) -> Action:

@@ -282,6 +282,19 @@ def test_builtin_action() -> None:
         envs.builtin_action("forager", obs[:11])
 
 
+
+def test_network_inputs_many_are_each_rows() -> None:
+    rng = np.random.default_rng(5)
+    obs = rng.integers(-32768, 32768, size=(40, 12)).astype(np.float32) / np.float32(32768)
+    obs[0, :4] = [1.0, -1.0, 2.0, np.nan]  # saturated both ways, and NaN (as 0)
+    many = envs.network_inputs(obs)
+    assert many.shape == (40, 13) and many.dtype == np.int16
+    for i in range(40):
+        assert np.array_equal(many[i], envs.network_inputs(obs[i]))
+    assert many[0, :5].tolist() == [32767, 32767, -32768, 32767, 0]
+    assert envs.network_inputs(obs[3]).shape == (13,)
+
+
 # ---- the trace: the environment's game is duel_evolve play's, bit for bit ----
 
 def _fmt(v: float) -> str:
