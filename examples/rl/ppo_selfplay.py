@@ -192,7 +192,8 @@ def snapshot(model: PPO, out: str, state: dict[str, Any]) -> None:
     policy_genome(model).save(os.path.join(out, "pool", name))
     state["pool"].append(name)
     state["next_snapshot"] = state["games"] + state["every"]
-    model.save(os.path.join(out, "model.zip"))
+    model.save(os.path.join(out, "model.tmp.zip"))  # then renamed: a stop while saving keeps the last model whole
+    os.replace(os.path.join(out, "model.tmp.zip"), os.path.join(out, "model.zip"))
     tmp = os.path.join(out, "state.json.tmp")
     with open(tmp, "w") as f:
         json.dump(state, f)
