@@ -1,4 +1,4 @@
-/* duel_html_run.c - a run's and an experiment's web pages: their records as JSON tables, the dominance ladder with its games (pages of their own or embedded), and the files written safely. */
+/* duel_html_run.c - a run's and an experiment's web pages: their records (read by duel_html_data.c), the dominance ladder with its games (pages of their own or embedded), and the files written safely. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdlib.h>
