@@ -566,16 +566,9 @@ typedef struct html_exp {
 
 static void html_exp_free(html_exp *e)
 {
-    size_t i;
-    for (i = 0; i < e->n_methods; i++)
-        free(e->methods[i]);
-    for (i = 0; i < e->n_runs; i++) {
-        free(e->run_method[i]);
-        free(e->run_name[i]);
-    }
-    free(e->methods);
-    free(e->run_method);
-    free(e->run_name);
+    duel_html_strings_free(e->methods, e->n_methods);
+    duel_html_strings_free(e->run_method, e->n_runs);
+    duel_html_strings_free(e->run_name, e->n_runs);
     free(e->table1);
 }
 
