@@ -25,15 +25,17 @@ def policies(out: str) -> list[tuple[int, str]]:
     """(games, genome file) of every snapshot in the pool's order, then the final policy when there is one."""
     with open(os.path.join(out, "state.json")) as f:
         state = json.load(f)
-    found = []
+    found: list[tuple[int, str]] = []
     for name in state["pool"]:
         m = re.fullmatch(r"snap-(\d+)\.genome", name)
         if m is None:
             raise SystemExit(f"{out}/state.json: pool entry {name!r} is not a snapshot's name")
+        if found and found[-1][0] == int(m.group(1)):
+            continue  # the same file twice (a run's end could add its last snapshot again)
         found.append((int(m.group(1)), os.path.join(out, "pool", name)))
     final = os.path.join(out, "ppo-final.genome")
-    if os.path.exists(final):
-        found.append((int(state["games"]), final))
+    if os.path.exists(final) and (not found or found[-1][0] != int(state["games"])):
+        found.append((int(state["games"]), final))  # else the last snapshot is the final policy
     return found
 
 

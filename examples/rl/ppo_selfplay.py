@@ -177,6 +177,11 @@ class SelfPlay(BaseCallback):
         return self.state["games"] < self.budget
 
 
+def snap_name(games: int) -> str:
+    """The pool's file of the policy after `games` games."""
+    return f"snap-{games:09d}.genome"
+
+
 _clock = [time.time(), time.process_time()]  # wall and CPU time (user+sys, all threads) at the last snapshot
 
 
@@ -188,7 +193,7 @@ def snapshot(model: PPO, out: str, state: dict[str, Any]) -> None:
     state["cpu_seconds"] = state.get("cpu_seconds", 0.0) + now[1] - _clock[1]
     _clock[:] = now
     clamp_actor(model)
-    name = f"snap-{state['games']:09d}.genome"
+    name = snap_name(state["games"])
     policy_genome(model).save(os.path.join(out, "pool", name))
     state["pool"].append(name)
     state["next_snapshot"] = state["games"] + state["every"]
@@ -255,13 +260,16 @@ def main(argv: list[str] | None = None) -> int:
     if state["games"] < state["budget"]:
         model.learn(total_timesteps=10**12, callback=SelfPlay(a.out, state["every"], a.games, state),
                     reset_num_timesteps=not resumed)
-        snapshot(model, a.out, state)
+        if state["pool"][-1] != snap_name(state["games"]):  # the callback's last snapshot may be this very policy
+            snapshot(model, a.out, state)
     final = os.path.join(a.out, "ppo-final.genome")
     policy_genome(model).save(final)
     res = {"games": state["games"], "learner_steps": int(model.num_timesteps), "pool": len(state["pool"]),
            "seconds": round(state["seconds"]), "cpu_seconds": round(state["cpu_seconds"]), **place(final, a.against)}
-    with open(os.path.join(a.out, "result.json"), "w") as f:
+    tmp = os.path.join(a.out, "result.json.tmp")
+    with open(tmp, "w") as f:
         json.dump(res, f, indent=1)
+    os.replace(tmp, os.path.join(a.out, "result.json"))
     print(f"{res['games']:,} games, {res['learner_steps']:,} learner steps; the final policy: {final}")
     for b, c in res["builtins"].items():
         print(f"  vs {b:15s} {c['wins']:3d} wins {c['losses']:3d} losses of 288")
